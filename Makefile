@@ -1,0 +1,34 @@
+# ejecta: the two commands of the README quick start, and a few conveniences.
+#   make demo   install missing packages, build (Release), run the default scene
+#   make test   install missing packages, build (Release), run the test suite
+BUILD ?= build
+JOBS  ?= $(shell nproc)
+CTEST_ARGS ?= -LE slow
+
+.PHONY: all deps configure build demo test verification bench clean
+
+all: build
+
+deps:
+	@bash cmake/install-deps.sh
+
+configure: deps
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release > $(BUILD).configure.log 2>&1 || (cat $(BUILD).configure.log; exit 1)
+
+build: configure
+	@cmake --build $(BUILD) -j $(JOBS)
+
+demo: build
+	$(BUILD)/apps/ejecta run --out runs/demo
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+
+verification: build
+	cd $(BUILD) && ctest --output-on-failure -L verification
+
+bench: build
+	$(BUILD)/bench/ejecta_bench_sedov
+
+clean:
+	rm -rf $(BUILD) $(BUILD).configure.log

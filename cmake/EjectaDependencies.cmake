@@ -1,0 +1,9 @@
+# Third-party packages, all from Debian 12 (see cmake/install-deps.sh and docs/dependencies.md).
+# Each library target links only what it uses; this file just finds them.
+find_package(OpenMP REQUIRED)
+find_package(HDF5 REQUIRED COMPONENTS C)
+find_package(tomlplusplus 3 CONFIG REQUIRED)
+find_package(CLI11 2 CONFIG REQUIRED)
+find_package(GTest REQUIRED)
+find_package(benchmark CONFIG QUIET)
+find_package(nlohmann_json 3 CONFIG REQUIRED)

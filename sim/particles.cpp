@@ -1,0 +1,58 @@
+#include "sim/particles.hpp"
+
+#include <algorithm>
+
+namespace ejecta {
+
+namespace {
+
+template <typename T>
+void permuteArray(std::vector<T>& data, const std::vector<std::size_t>& order) {
+  std::vector<T> out(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i) out[i] = data[order[i]];
+  data.swap(out);
+}
+
+// Applies f to every per-particle array.
+template <typename F>
+void forEachArray(ParticleSet& p, F&& f) {
+  for (int d = 0; d < 3; ++d) { f(p.x[d]); f(p.v[d]); f(p.a[d]); }
+  f(p.mass); f(p.rho); f(p.u); f(p.h); f(p.material); f(p.id);
+  f(p.P); f(p.cs); f(p.du_dt); f(p.drho_dt); f(p.dh_dt);
+  f(p.omega); f(p.divv); f(p.curlv); f(p.areaDensity);
+}
+
+}  // namespace
+
+void ParticleSet::resize(std::size_t n) {
+  const std::size_t old = size();
+  forEachArray(*this, [n](auto& arr) { arr.resize(n); });
+  for (std::size_t i = old; i < n; ++i) omega[i] = 1.0;
+}
+
+void ParticleSet::append(const std::array<double, 3>& pos, const std::array<double, 3>& vel,
+                         double m, double density, double specificEnergy,
+                         double smoothingLength, int mat) {
+  const std::size_t i = size();
+  resize(i + 1);
+  for (int d = 0; d < 3; ++d) { x[d][i] = pos[d]; v[d][i] = vel[d]; }
+  mass[i] = m;
+  rho[i] = density;
+  u[i] = specificEnergy;
+  h[i] = smoothingLength;
+  material[i] = mat;
+  id[i] = static_cast<std::int64_t>(i);
+  numReal = size();
+}
+
+void ParticleSet::clearGhosts() {
+  forEachArray(*this, [this](auto& arr) { arr.resize(numReal); });
+  ghostSource.clear();
+}
+
+void ParticleSet::permute(const std::vector<std::size_t>& order) {
+  clearGhosts();
+  forEachArray(*this, [&order](auto& arr) { permuteArray(arr, order); });
+}
+
+}  // namespace ejecta

@@ -1,0 +1,61 @@
+#pragma once
+// ParticleSet: the state of every particle, stored as a structure of arrays so that the pair
+// loops stream through contiguous memory. Real (owned) particles occupy [0, numReal); ghost
+// particles (mirror images at walls and the RZ axis, periodic images) follow them and are
+// rebuilt every step from their sources.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace ejecta {
+
+using Vec3Array = std::array<std::vector<double>, 3>;
+
+struct ParticleSet {
+  // --- Primary state (integrated in time; written to snapshots) ---
+  Vec3Array x;                  // position [m]; RZ: x[0] = r, x[1] = z
+  Vec3Array v;                  // velocity [m/s]
+  std::vector<double> mass;     // [kg]; in RZ the whole ring's mass; 2D planar: per metre depth
+  std::vector<double> rho;      // mass density [kg/m^3]
+  std::vector<double> u;        // specific internal energy [J/kg]
+  std::vector<double> h;        // smoothing length [m]
+  std::vector<int> material;    // index into the MaterialTable
+  std::vector<std::int64_t> id; // stable identity, survives reordering
+
+  // --- Derived by the equation of state ---
+  std::vector<double> P;        // pressure [Pa]
+  std::vector<double> cs;       // sound speed [m/s]
+
+  // --- Time derivatives (kept between steps: the leapfrog needs them, restarts store them) ---
+  Vec3Array a;                  // acceleration [m/s^2]
+  std::vector<double> du_dt;    // [J/kg/s]
+  std::vector<double> drho_dt;  // [kg/m^3/s] (continuity density only)
+  std::vector<double> dh_dt;    // [m/s]
+
+  // --- Auxiliary per-step quantities of the density pass ---
+  std::vector<double> omega;    // grad-h correction factor (1 when h is not tied to density)
+  std::vector<double> divv;     // velocity divergence estimate [1/s]
+  std::vector<double> curlv;    // |curl v| estimate [1/s]
+  std::vector<double> areaDensity;  // RZ only: eta = 2 pi r rho [kg/m^2], the 2D summation
+
+  std::size_t numReal = 0;
+  // For ghost k (index numReal + k): the real particle it images.
+  std::vector<std::size_t> ghostSource;
+
+  std::size_t size() const { return mass.size(); }
+  std::size_t numGhosts() const { return size() - numReal; }
+
+  // Resize every array to n particles (new entries zeroed; omega set to 1).
+  void resize(std::size_t n);
+  // Append one particle with primary state; derived fields zeroed.
+  void append(const std::array<double, 3>& pos, const std::array<double, 3>& vel, double m,
+              double density, double specificEnergy, double smoothingLength, int mat);
+  // Drop all ghosts.
+  void clearGhosts();
+  // Reorder real particles by the permutation `order` (new[i] = old[order[i]]). Ghosts are
+  // dropped first.
+  void permute(const std::vector<std::size_t>& order);
+};
+
+}  // namespace ejecta

@@ -1,0 +1,127 @@
+#pragma once
+// Scene: a validated, SI-unit description of one run, as read from a TOML scene file.
+// Everything the Simulation assembles comes from here; the engine models no more than this asks.
+#include <array>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sim/geometry.hpp"
+
+namespace ejecta {
+
+// Thrown for any bad scene: the message names the file, the line (when known), the key and the
+// reason, e.g. "scenes/x.toml:12: key 'bodies[1].spacing': must be positive (got -0.1 m)".
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+enum class KernelKind { CubicSpline, WendlandC2, WendlandC4 };
+enum class DensityMethod { Summation, Continuity };
+enum class SmoothingLengthMethod { Neighbours, Seed, Constant };
+enum class BoundaryKind { Open, Periodic, Wall };
+enum class LatticeKind { Cubic, Hexagonal };
+enum class ShapeKind { Box, Sphere, Shell, HalfSpace };
+enum class DepositProfile { TopHat, Gaussian };
+
+struct AxisBounds {
+  double min = 0.0, max = 0.0;
+  BoundaryKind lower = BoundaryKind::Open;   // boundary at min
+  BoundaryKind upper = BoundaryKind::Open;   // boundary at max
+  bool bounded = false;  // false: open in both directions with no box (min/max unused)
+};
+
+struct SphOptions {
+  KernelKind kernel = KernelKind::CubicSpline;
+  DensityMethod density = DensityMethod::Summation;
+  SmoothingLengthMethod smoothingLength = SmoothingLengthMethod::Neighbours;
+  double eta = 1.2;          // h = eta * (m/rho)^(1/d) for Neighbours (and initial h for all)
+  double relaxation = 1.0;   // theta of the seed's eq. (1.5), Seed method only
+  double courant = 0.3;      // xi of the seed's eq. (1.8)
+  double forceFactor = 0.25; // dt <= forceFactor * sqrt(h/|a|)
+  // Monaghan artificial viscosity, seed eqs. (1.6)-(1.7)
+  double alpha = 1.0;
+  double beta = 2.0;
+  double epsilon = 0.01;     // phi^2 = epsilon * h_ij^2 regulariser
+  bool balsara = false;      // Balsara (1995) shear switch
+  double conductivity = 0.0; // Price (2008) artificial conductivity coefficient alpha_u; 0 = off
+  double hMinFactor = 1e-3;  // h below hMinFactor * initial h is a collapse (run stops)
+};
+
+struct TimeOptions {
+  double tEnd = 0.0;          // [s], required
+  double dtMax = 0.0;         // [s], 0 = unlimited
+  double dtMin = 0.0;         // [s], dt below this stops the run (0 = 1e-12 * tEnd)
+  long maxSteps = 0;          // 0 = unlimited
+};
+
+struct MaterialSpec {
+  std::string name;
+  std::string eos;            // "ideal_gas" for now
+  double gamma = 1.4;         // ideal gas adiabatic index
+  int line = 0;               // source line in the scene file, for later messages
+};
+
+struct ShapeSpec {
+  ShapeKind kind = ShapeKind::Box;
+  std::array<double, 3> min{}, max{};       // Box
+  std::array<double, 3> center{};           // Sphere, Shell (a disc in 2D, a segment in 1D)
+  double radius = 0.0;                      // Sphere; Shell outer radius
+  double innerRadius = 0.0;                 // Shell
+  std::array<double, 3> point{};            // HalfSpace: a point on the plane
+  std::array<double, 3> normal{};           // HalfSpace: outward normal; inside is behind it
+};
+
+struct BodySpec {
+  std::string name;
+  int material = 0;                         // index into Scene::materials
+  ShapeSpec shape;
+  LatticeKind lattice = LatticeKind::Cubic;
+  double spacing = 0.0;                     // [m]
+  double density = 0.0;                     // [kg/m^3]
+  std::optional<double> pressure;           // [Pa]; exactly one of pressure / internalEnergy
+  std::optional<double> internalEnergy;     // [J/kg]
+  std::array<double, 3> velocity{};         // [m/s]
+  int line = 0;
+};
+
+// Energy added to the particles of a region at t = 0 (a blast source; later the DED of yields).
+struct EnergyDepositSpec {
+  std::string name;
+  double energy = 0.0;                      // [J]; in 2D planar per metre depth
+  std::array<double, 3> center{};
+  double radius = 0.0;                      // TopHat: particles with |x - c| <= radius
+  DepositProfile profile = DepositProfile::TopHat;
+  double width = 0.0;                       // Gaussian: exp(-r^2/width^2)
+  int line = 0;
+};
+
+struct OutputOptions {
+  double snapshotInterval = 0.0;            // [s]; 0 = first and last only
+  bool snapshots = true;
+};
+
+struct Scene {
+  std::string name;
+  std::string description;
+  std::string sourcePath;                   // file it came from ("<default>" when embedded)
+  Geometry geometry = Geometry::Planar;
+  std::array<AxisBounds, 3> domain{};       // per axis; RZ: axis 0 is r (lower bound = the axis)
+  SphOptions sph;
+  TimeOptions time;
+  std::vector<MaterialSpec> materials;
+  std::vector<BodySpec> bodies;             // earlier bodies win where shapes overlap
+  std::vector<EnergyDepositSpec> deposits;
+  OutputOptions output;
+};
+
+// Reads and validates a scene file. `overrides` are "dotted.key=value" strings applied before
+// validation (the command line's --set). Throws SceneError.
+Scene loadScene(const std::string& path, const std::vector<std::string>& overrides = {});
+// Same, from TOML text; `sourceName` is used in messages.
+Scene parseScene(const std::string& tomlText, const std::string& sourceName,
+                 const std::vector<std::string>& overrides = {});
+
+}  // namespace ejecta
