@@ -1,0 +1,123 @@
+#include "sim/boundaries.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ejecta {
+
+Boundaries::Boundaries(const Scene& scene) : Boundaries(scene.geometry, scene.domain) {}
+
+Boundaries::Boundaries(Geometry geometry, const std::array<AxisBounds, 3>& domain)
+    : geometry_(geometry), dim_(spatialDimension(geometry)), domain_(domain) {
+  if (geometry_ == Geometry::Axisymmetric) {
+    // The axis is a mirror whatever the scene says about r's lower bound.
+    domain_[0].bounded = true;
+    domain_[0].min = 0.0;
+    domain_[0].lower = BoundaryKind::Wall;
+    if (domain_[0].max <= 0.0) domain_[0].upper = BoundaryKind::Open;
+  }
+  for (int d = 0; d < dim_; ++d) {
+    const AxisBounds& b = domain_[d];
+    if (!b.bounded) continue;
+    const double length = b.max - b.min;
+    if (b.lower != BoundaryKind::Open)
+      faces_.push_back({d, false, b.lower == BoundaryKind::Periodic, b.min, length});
+    if (b.upper != BoundaryKind::Open)
+      faces_.push_back({d, true, b.upper == BoundaryKind::Periodic, b.max, length});
+  }
+}
+
+void Boundaries::confine(ParticleSet& p, Vec3Array* alsoFlip) const {
+  for (int d = 0; d < dim_; ++d) {
+    const AxisBounds& b = domain_[d];
+    if (!b.bounded) continue;
+    const double length = b.max - b.min;
+    std::vector<double>& x = p.x[d];
+    std::vector<double>& v = p.v[d];
+    auto reflect = [&](std::size_t i, double wall) {
+      x[i] = 2.0 * wall - x[i];
+      v[i] = -v[i];
+      if (alsoFlip) (*alsoFlip)[d][i] = -(*alsoFlip)[d][i];
+    };
+    for (std::size_t i = 0; i < p.numReal; ++i) {
+      if (x[i] < b.min) {
+        if (b.lower == BoundaryKind::Periodic) x[i] += length;
+        else if (b.lower == BoundaryKind::Wall) reflect(i, b.min);
+      } else if (x[i] >= b.max) {
+        if (b.upper == BoundaryKind::Periodic) x[i] -= length;
+        else if (b.upper == BoundaryKind::Wall) reflect(i, b.max);
+      }
+    }
+  }
+}
+
+void Boundaries::makeGhosts(ParticleSet& p, double supportFactor) const {
+  p.clearGhosts();
+  flips_.clear();
+  layer_.assign(faces_.size(), 0.0);
+  for (std::size_t f = 0; f < faces_.size(); ++f) {
+    const Face& face = faces_[f];
+    const int d = face.axis;
+    auto distance = [&](std::size_t i) {
+      return face.upper ? face.position - p.x[d][i] : p.x[d][i] - face.position;
+    };
+    // Layer: the widest support among particles whose own support reaches the face. Includes
+    // ghosts made for earlier faces, which is what fills the corners.
+    const std::size_t n = p.size();
+    double layer = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double reach = supportFactor * p.h[i];
+      if (distance(i) < reach) layer = std::max(layer, reach);
+    }
+    layer_[f] = layer;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double dist = distance(i);
+      if (dist < 0.0 || dist >= layer) continue;
+      const std::size_t source = i < p.numReal ? i : p.ghostSource[i - p.numReal];
+      const std::uint8_t oldFlips = i < p.numReal ? 0 : flips_[i - p.numReal];
+      const std::size_t g = p.size();
+      p.resize(g + 1);
+      // Copy everything from particle i (itself possibly a ghost), then transform.
+      for (int k = 0; k < 3; ++k) { p.x[k][g] = p.x[k][i]; p.v[k][g] = p.v[k][i]; }
+      p.mass[g] = p.mass[i]; p.rho[g] = p.rho[i]; p.u[g] = p.u[i]; p.h[g] = p.h[i];
+      p.material[g] = p.material[i]; p.id[g] = p.id[i]; p.P[g] = p.P[i]; p.cs[g] = p.cs[i];
+      p.omega[g] = p.omega[i]; p.areaDensity[g] = p.areaDensity[i];
+      std::uint8_t flips = oldFlips;
+      if (face.periodic) {
+        p.x[d][g] += face.upper ? -face.period : face.period;
+      } else {
+        p.x[d][g] = 2.0 * face.position - p.x[d][i];
+        p.v[d][g] = -p.v[d][i];
+        flips ^= static_cast<std::uint8_t>(1u << d);
+      }
+      p.ghostSource.push_back(source);
+      flips_.push_back(flips);
+    }
+  }
+}
+
+void Boundaries::refreshGhosts(ParticleSet& p) const {
+  const std::size_t nReal = p.numReal;
+  for (std::size_t g = 0; g < p.numGhosts(); ++g) {
+    const std::size_t i = nReal + g, s = p.ghostSource[g];
+    for (int k = 0; k < 3; ++k) p.v[k][i] = (flips_[g] >> k) & 1u ? -p.v[k][s] : p.v[k][s];
+    p.rho[i] = p.rho[s]; p.u[i] = p.u[s]; p.h[i] = p.h[s]; p.P[i] = p.P[s]; p.cs[i] = p.cs[s];
+    p.omega[i] = p.omega[s]; p.areaDensity[i] = p.areaDensity[s];
+    p.divv[i] = p.divv[s]; p.curlv[i] = p.curlv[s];
+  }
+}
+
+bool Boundaries::layersCover(const ParticleSet& p, double supportFactor) const {
+  for (std::size_t f = 0; f < faces_.size(); ++f) {
+    const Face& face = faces_[f];
+    const int d = face.axis;
+    for (std::size_t i = 0; i < p.numReal; ++i) {
+      const double dist = face.upper ? face.position - p.x[d][i] : p.x[d][i] - face.position;
+      const double reach = supportFactor * p.h[i];
+      if (dist < reach && reach > layer_[f]) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace ejecta

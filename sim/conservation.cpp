@@ -1,0 +1,21 @@
+#include "sim/conservation.hpp"
+
+namespace ejecta {
+
+ConservedTotals conservedTotals(const ParticleSet& p) {
+  ConservedTotals t;
+  for (std::size_t i = 0; i < p.numReal; ++i) {
+    const double m = p.mass[i];
+    double v2 = 0.0;
+    for (int d = 0; d < 3; ++d) {
+      v2 += p.v[d][i] * p.v[d][i];
+      t.momentum[d] += m * p.v[d][i];
+    }
+    t.kinetic += 0.5 * m * v2;
+    t.internal += m * p.u[i];
+    t.mass += m;
+  }
+  return t;
+}
+
+}  // namespace ejecta

@@ -1,0 +1,19 @@
+#pragma once
+// Conserved totals over the real particles, summed in a fixed order (deterministic).
+#include <array>
+
+#include "sim/particles.hpp"
+
+namespace ejecta {
+
+struct ConservedTotals {
+  double kinetic = 0.0;   // [J] (2D planar: per metre depth)
+  double internal = 0.0;  // [J]
+  double total() const { return kinetic + internal; }
+  std::array<double, 3> momentum{};  // [kg m/s]; RZ: only the z component (index 1) is conserved
+  double mass = 0.0;
+};
+
+ConservedTotals conservedTotals(const ParticleSet& p);
+
+}  // namespace ejecta

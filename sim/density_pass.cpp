@@ -1,0 +1,197 @@
+#include "sim/density_pass.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace ejecta {
+
+namespace {
+
+constexpr double kSearchMargin = 1.15;   // candidates fetched out to 1.15 x the support
+constexpr double kNewtonTolerance = 1e-7;
+constexpr int kNewtonMaxIterations = 60;
+constexpr double kMaxGrowthPerStep = 2.0;  // h may change by at most this factor in one pass
+
+template <int D>
+double powD(double x) {
+  if constexpr (D == 1) return x;
+  else if constexpr (D == 2) return x * x;
+  else return x * x * x;
+}
+
+// Sum of m_j W and m_j dW/dh over the candidates within the support of h.
+template <template <int> class K, int D>
+void kernelSums(const ParticleSet& p, const std::vector<std::uint32_t>& cand,
+                const std::vector<double>& dist, double h, double& S, double& dS) {
+  S = 0.0;
+  dS = 0.0;
+  const double reach = kKernelSupport * h;
+  for (std::size_t k = 0; k < cand.size(); ++k) {
+    const double r = dist[k];
+    if (r >= reach) continue;
+    const double m = p.mass[cand[k]];
+    S += m * kernelValue<K, D>(r, h);
+    dS += m * kernelDerivativeH<K, D>(r, h);
+  }
+}
+
+template <template <int> class K, int D, bool RZ>
+void densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
+  const SphOptions& sph = ws.sph;
+  const bool summation = sph.density == DensityMethod::Summation;
+  const bool tiedH = summation && sph.smoothingLength == SmoothingLengthMethod::Neighbours;
+  const std::size_t nReal = p.numReal;
+  const double etaD = powD<D>(sph.eta);
+  bool failed = false;
+  std::size_t failedIndex = 0;
+
+#pragma omp parallel
+  {
+    const int t = omp_get_thread_num();
+    std::vector<std::uint32_t> cand, list;
+    std::vector<double> dist;
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < nReal; ++i) {
+      const double xi[3] = {p.x[0][i], p.x[1][i], p.x[2][i]};
+      const double mi = p.mass[i];
+      const double hStart = p.h[i];
+      double h = hStart;
+      double radius = 0.0;
+      auto fetch = [&](double needed) {
+        radius = needed * kSearchMargin;
+        cand.clear();
+        ws.grid.query<D>(p, xi, radius, cand);
+        dist.resize(cand.size());
+        for (std::size_t k = 0; k < cand.size(); ++k) {
+          double r2 = 0.0;
+          for (int d = 0; d < D; ++d) {
+            const double dx = xi[d] - p.x[d][cand[k]];
+            r2 += dx * dx;
+          }
+          dist[k] = std::sqrt(r2);
+        }
+      };
+      fetch(kKernelSupport * h);
+
+      if (tiedH) {
+        // Newton iteration on f(h) = S(h) - m (eta/h)^D.
+        for (int it = 0; it < kNewtonMaxIterations; ++it) {
+          double S, dS;
+          kernelSums<K, D>(p, cand, dist, h, S, dS);
+          const double target = mi * etaD / powD<D>(h);
+          const double f = S - target;
+          const double fp = dS + D * target / h;
+          double hNew = (fp > 0.0 && std::isfinite(fp)) ? h - f / fp : h * (f > 0 ? 0.8 : 1.25);
+          hNew = std::clamp(hNew, std::max(0.5 * h, hStart / kMaxGrowthPerStep),
+                            std::min(2.0 * h, hStart * kMaxGrowthPerStep));
+          const bool converged = std::abs(hNew - h) < kNewtonTolerance * h;
+          h = hNew;
+          if (kKernelSupport * h > radius) fetch(kKernelSupport * h);
+          if (converged) break;
+        }
+      }
+
+      // Final sums at h: density, grad-h term, gather list, divergence, curl, continuity rate.
+      const double reach = kKernelSupport * h;
+      double S = 0.0, dS = 0.0, vdotgrad = 0.0;
+      double curl[3] = {0.0, 0.0, 0.0};
+      list.clear();
+      for (std::size_t k = 0; k < cand.size(); ++k) {
+        const double r = dist[k];
+        if (r >= reach) continue;
+        const std::uint32_t j = cand[k];
+        list.push_back(j);
+        const double m = p.mass[j];
+        S += m * kernelValue<K, D>(r, h);
+        dS += m * kernelDerivativeH<K, D>(r, h);
+        if (r == 0.0) continue;
+        const double f = m * kernelDerivative<K, D>(r, h) / r;  // grad W = x_ij f / m
+        double dx[3] = {0.0, 0.0, 0.0}, dv[3] = {0.0, 0.0, 0.0};
+        for (int d = 0; d < D; ++d) {
+          dx[d] = xi[d] - p.x[d][j];
+          dv[d] = p.v[d][i] - p.v[d][j];
+          vdotgrad += dv[d] * dx[d] * f;
+        }
+        if constexpr (D == 2) {
+          curl[2] += (dv[0] * dx[1] - dv[1] * dx[0]) * f;
+        } else if constexpr (D == 3) {
+          curl[0] += (dv[1] * dx[2] - dv[2] * dx[1]) * f;
+          curl[1] += (dv[2] * dx[0] - dv[0] * dx[2]) * f;
+          curl[2] += (dv[0] * dx[1] - dv[1] * dx[0]) * f;
+        }
+      }
+      ws.lists.storeGather(t, i, list.data(), list.size());
+      ws.neighbourCount[i] = static_cast<std::uint32_t>(list.size());
+      p.h[i] = h;
+
+      double rt = 1.0, drt = 0.0;
+      if constexpr (RZ) ws.axis->smoothedRadius(xi[0], h, rt, drt);
+      // The density-like quantity of the kernel sums: rho (1D, 2D, 3D) or eta = 2 pi rt rho (RZ).
+      double sigma;
+      if (summation) {
+        sigma = S;
+        p.rho[i] = RZ ? S / (2.0 * std::numbers::pi * rt) : S;
+      } else {
+        sigma = RZ ? 2.0 * std::numbers::pi * rt * p.rho[i] : p.rho[i];
+      }
+      if (!(sigma > 0.0)) {
+#pragma omp critical
+        { failed = true; failedIndex = i; }
+        continue;
+      }
+      const double omega = tiedH ? 1.0 + h / (D * sigma) * dS : 1.0;
+      p.omega[i] = omega;
+      if constexpr (RZ) {
+        p.areaDensity[i] = sigma;
+        ws.smoothedR[i] = rt;
+        ws.dSmoothedR[i] = drt;
+      }
+      const double hoopRate = RZ ? p.v[0][i] * drt / rt : 0.0;  // v_r / r term of div v
+      p.divv[i] = -vdotgrad / (omega * sigma) + hoopRate;
+      p.curlv[i] = std::sqrt(curl[0] * curl[0] + curl[1] * curl[1] + curl[2] * curl[2]) /
+                   (omega * sigma);
+      // Continuity rate, also what drives the seed's dh/dt.
+      const double drho = p.rho[i] / sigma * vdotgrad - p.rho[i] * hoopRate;
+      p.drho_dt[i] = drho;
+      p.dh_dt[i] = sph.smoothingLength == SmoothingLengthMethod::Seed
+                       ? -sph.relaxation * h / (p.rho[i] * D) * drho
+                       : 0.0;
+    }
+  }
+  if (failed)
+    throw std::runtime_error("density pass: particle " + std::to_string(p.id[failedIndex]) +
+                             " has no positive density (isolated, or negative mass)");
+}
+
+}  // namespace
+
+void runDensityPass(ParticleSet& p, HydroWorkspace& ws) {
+  ws.neighbourCount.resize(p.numReal);
+  if (ws.geometry == Geometry::Axisymmetric) {
+    ws.smoothedR.resize(p.size());
+    ws.dSmoothedR.resize(p.size());
+  }
+  dispatchHydro(ws, [&]<template <int> class K, int D, bool RZ>() {
+    densityPassImpl<K, D, RZ>(p, ws);
+  });
+}
+
+void setSmoothingFromDensity(ParticleSet& p, const HydroWorkspace& ws) {
+  const int D = ws.dim;
+  const bool rz = ws.geometry == Geometry::Axisymmetric;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.numReal; ++i) {
+    // RZ: the 2D area per particle is m / (2 pi r rho); r floored at h/4 so the axis is finite.
+    const double perVolume = rz ? 2.0 * std::numbers::pi *
+                                      std::max(p.x[0][i], 0.25 * p.h[i]) * p.rho[i]
+                                : p.rho[i];
+    p.h[i] = ws.sph.eta * std::pow(p.mass[i] / perVolume, 1.0 / D);
+  }
+}
+
+}  // namespace ejecta

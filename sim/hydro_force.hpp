@@ -1,0 +1,21 @@
+#pragma once
+// The force pass: pressure gradient, Monaghan artificial viscosity and the internal energy
+// equation, with the grad-h terms when h is tied to the density (Price 2012, eqs. 35-36):
+//   dv_i/dt = -sum_j m_j [ P_i/(Om_i rho_i^2) gradW_ij(h_i) + P_j/(Om_j rho_j^2) gradW_ij(h_j)
+//                          + Pi_ij gradW_ij(avg) ]
+//   du_i/dt =  P_i/(Om_i rho_i^2) sum_j m_j v_ij . gradW_ij(h_i) + 1/2 sum_j m_j Pi_ij v_ij . gradW
+// Pi_ij is the seed's eq. (1.6)-(1.7) (Monaghan 1992) with the optional Balsara (1995) factor.
+// Optional artificial conductivity (Price 2008): du_i += sum_j m_j a_u v_sig (u_i-u_j)/rho_ij F.
+// RZ (ring masses, Brookshaw 2003 / Garcia-Senz et al. 2009 area-weighted form): rho^2 becomes
+// rho * eta and rho_ij becomes eta_ij; the hoop terms +P_i rt'/(rho_i rt_i) (radial acceleration)
+// and -P_i v_r rt'/(rho_i rt_i) (energy) complete the Lagrangian derivation (docs/rz.md).
+#include "sim/hydro_workspace.hpp"
+#include "sim/particles.hpp"
+
+namespace ejecta {
+
+// Requires: density pass done, EOS evaluated, ghosts refreshed, pair lists built.
+// Produces a, du_dt for real particles and ws.signalSpeed.
+void runForcePass(ParticleSet& p, HydroWorkspace& ws);
+
+}  // namespace ejecta

@@ -1,0 +1,57 @@
+#pragma once
+// Per-step scratch shared by the density and force passes: neighbour structures and the
+// per-particle quantities that are not part of the particle state.
+#include <optional>
+#include <vector>
+
+#include "sim/axis_correction.hpp"
+#include "sim/cell_grid.hpp"
+#include "sim/neighbour_lists.hpp"
+#include "sim/scene.hpp"
+
+namespace ejecta {
+
+struct HydroWorkspace {
+  HydroWorkspace(const SphOptions& options, Geometry g)
+      : sph(options), geometry(g), dim(spatialDimension(g)) {
+    if (g == Geometry::Axisymmetric) axis.emplace(options.kernel);
+  }
+  SphOptions sph;
+  Geometry geometry;
+  int dim;
+  std::optional<AxisCorrection> axis;  // RZ only
+  CellGrid grid;
+  NeighbourLists lists;
+  int numThreads = 1;
+  // RZ: smoothed radius rt and d rt / d r of each particle (real and ghost).
+  std::vector<double> smoothedR, dSmoothedR;
+  // Largest pairwise signal velocity seen by each real particle in the force pass [m/s].
+  std::vector<double> signalSpeed;
+  // Number of neighbours in each real particle's gather list (diagnostics).
+  std::vector<std::uint32_t> neighbourCount;
+};
+
+// Runs `f.template operator()<K, D, RZ>()` for the workspace's kernel and geometry.
+template <typename F>
+decltype(auto) dispatchHydro(const HydroWorkspace& ws, F&& f);
+
+}  // namespace ejecta
+
+#include "sim/kernel.hpp"
+
+namespace ejecta {
+
+template <typename F>
+decltype(auto) dispatchHydro(const HydroWorkspace& ws, F&& f) {
+  return withKernel(ws.sph.kernel, [&]<template <int> class K>() {
+    switch (ws.geometry) {
+      case Geometry::Line: return f.template operator()<K, 1, false>();
+      case Geometry::Planar: return f.template operator()<K, 2, false>();
+      case Geometry::Axisymmetric: return f.template operator()<K, 2, true>();
+      case Geometry::Spatial: break;
+    }
+    return f.template operator()<K, 3, false>();
+  });
+}
+
+}  // namespace ejecta

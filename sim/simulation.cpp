@@ -1,0 +1,251 @@
+#include "sim/simulation.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <sstream>
+
+#include "sim/density_pass.hpp"
+#include "sim/hydro_force.hpp"
+
+namespace ejecta {
+
+namespace {
+
+// Ghost layers and neighbour search reach this far beyond 2h, so the density pass may grow h by
+// this factor without a second ghost build (it checks, and rebuilds if h grew more).
+constexpr double kGhostMargin = 1.25;
+// Particles are reordered by cell every this many steps, for memory locality of the pair loops.
+constexpr long kSortInterval = 16;
+
+std::string describeParticle(const ParticleSet& p, std::size_t i) {
+  std::ostringstream s;
+  s.precision(6);
+  s << "particle id " << p.id[i] << " (material " << p.material[i] << ") at x=(" << p.x[0][i]
+    << ", " << p.x[1][i] << ", " << p.x[2][i] << ") m, v=(" << p.v[0][i] << ", " << p.v[1][i]
+    << ", " << p.v[2][i] << ") m/s, rho=" << p.rho[i] << " kg/m^3, u=" << p.u[i]
+    << " J/kg, P=" << p.P[i] << " Pa, h=" << p.h[i] << " m";
+  return s.str();
+}
+
+}  // namespace
+
+Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materials,
+                       int numThreads)
+    : scene_(std::move(scene)),
+      p_(std::move(particles)),
+      materials_(std::move(materials)),
+      boundaries_(scene_),
+      ws_(scene_.sph, scene_.geometry) {
+  ws_.numThreads = numThreads;
+  omp_set_num_threads(numThreads);
+  double hMinInitial = std::numeric_limits<double>::max();
+  for (std::size_t i = 0; i < p_.numReal; ++i) hMinInitial = std::min(hMinInitial, p_.h[i]);
+  hMin_ = scene_.sph.hMinFactor * hMinInitial;
+  for (std::size_t i = 0; i < p_.numReal; ++i)
+    if (p_.material[i] < 0 || static_cast<std::size_t>(p_.material[i]) >= materials_.size())
+      throw SimulationError("particle id " + std::to_string(p_.id[i]) +
+                            " has material index " + std::to_string(p_.material[i]) +
+                            " but the scene defines " + std::to_string(materials_.size()));
+}
+
+void Simulation::initialise() {
+  if (scene_.sph.density == DensityMethod::Continuity &&
+      scene_.sph.smoothingLength == SmoothingLengthMethod::Neighbours)
+    setSmoothingFromDensity(p_, ws_);
+  evaluateDerivatives();
+  computeNextTimestep();
+  checkHealth(dtNext_);
+}
+
+void Simulation::resume(double time, long step, double dtNext) {
+  time_ = time;
+  step_ = step;
+  dtNext_ = dtNext;
+}
+
+double Simulation::meanNeighbours() const {
+  if (ws_.neighbourCount.empty()) return 0.0;
+  const double sum = std::accumulate(ws_.neighbourCount.begin(), ws_.neighbourCount.end(), 0.0);
+  return sum / static_cast<double>(ws_.neighbourCount.size());
+}
+
+void Simulation::sortForLocality() {
+  p_.clearGhosts();
+  double hMean = 0.0;
+  for (std::size_t i = 0; i < p_.numReal; ++i) hMean += p_.h[i];
+  hMean /= std::max<std::size_t>(p_.numReal, 1);
+  CellGrid grid;
+  grid.build(p_, ws_.dim, kKernelSupport * hMean);
+  const std::vector<std::uint64_t> keys = grid.cellKeys(p_, p_.numReal);
+  std::vector<std::size_t> order(p_.numReal);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
+  p_.permute(order);
+}
+
+void Simulation::evaluateEquationOfState() {
+  materialMembers_.assign(materials_.size(), {});
+  for (std::size_t i = 0; i < p_.numReal; ++i) materialMembers_[p_.material[i]].push_back(i);
+  for (std::size_t m = 0; m < materials_.size(); ++m) {
+    const std::vector<std::size_t>& members = materialMembers_[m];
+    materials_[m].eos->evaluate(p_.rho.data(), p_.u.data(), p_.P.data(), p_.cs.data(),
+                                members.data(), members.size());
+  }
+}
+
+void Simulation::evaluateDerivatives() {
+  const int dim = ws_.dim;
+  double margin = kGhostMargin;
+  for (int attempt = 0;; ++attempt) {
+    boundaries_.makeGhosts(p_, kKernelSupport * margin);
+    // Cells about one (typical) kernel support across.
+    std::vector<double> hs(p_.h.begin(), p_.h.begin() + static_cast<std::ptrdiff_t>(p_.numReal));
+    std::nth_element(hs.begin(), hs.begin() + static_cast<std::ptrdiff_t>(hs.size() / 2), hs.end());
+    ws_.grid.build(p_, dim, kKernelSupport * hs[hs.size() / 2]);
+    ws_.lists.reset(p_.size(), ws_.numThreads);
+    std::vector<double> hBefore(p_.h.begin(), p_.h.begin() + static_cast<std::ptrdiff_t>(p_.numReal));
+    runDensityPass(p_, ws_);
+    if (boundaries_.layersCover(p_, kKernelSupport) || attempt == 3) break;
+    // h grew past the ghost layer: rebuild from the starting h with a wider layer.
+    std::copy(hBefore.begin(), hBefore.end(), p_.h.begin());
+    margin *= 1.5;
+  }
+  evaluateEquationOfState();
+  boundaries_.refreshGhosts(p_);
+  if (ws_.geometry == Geometry::Axisymmetric) {
+    for (std::size_t g = p_.numReal; g < p_.size(); ++g) {
+      const std::size_t s = p_.ghostSource[g - p_.numReal];
+      ws_.smoothedR[g] = ws_.smoothedR[s];
+      ws_.dSmoothedR[g] = ws_.dSmoothedR[s];
+    }
+  }
+  switch (dim) {
+    case 1: ws_.lists.findGhostGathers<1>(p_, ws_.grid, kKernelSupport);
+            ws_.lists.buildPairs<1>(p_, kKernelSupport); break;
+    case 2: ws_.lists.findGhostGathers<2>(p_, ws_.grid, kKernelSupport);
+            ws_.lists.buildPairs<2>(p_, kKernelSupport); break;
+    default: ws_.lists.findGhostGathers<3>(p_, ws_.grid, kKernelSupport);
+             ws_.lists.buildPairs<3>(p_, kKernelSupport); break;
+  }
+  runForcePass(p_, ws_);
+}
+
+void Simulation::computeNextTimestep() {
+  const SphOptions& sph = scene_.sph;
+  double dtCourant = std::numeric_limits<double>::max();
+  double dtForce = std::numeric_limits<double>::max();
+  for (std::size_t i = 0; i < p_.numReal; ++i) {
+    const double h = p_.h[i], c = p_.cs[i], div = std::abs(p_.divv[i]);
+    // Seed eq. (1.8), with |div v| (the printed h div v can be negative) and the denominator
+    // floored at c so that alpha = 0 still respects the sound-crossing limit.
+    const double denom =
+        h * div + std::max(1.2 * (sph.alpha * c + sph.beta * h * div), c);
+    if (denom > 0.0) dtCourant = std::min(dtCourant, sph.courant * h / denom);
+    double a2 = 0.0;
+    for (int d = 0; d < 3; ++d) a2 += p_.a[d][i] * p_.a[d][i];
+    if (a2 > 0.0) dtForce = std::min(dtForce, sph.forceFactor * std::sqrt(h / std::sqrt(a2)));
+  }
+  double dt = std::min(dtCourant, dtForce);
+  limiter_ = dtCourant <= dtForce ? StepLimiter::Courant : StepLimiter::Force;
+  if (scene_.time.dtMax > 0.0 && dt > scene_.time.dtMax) dt = scene_.time.dtMax;
+  if (dt == std::numeric_limits<double>::max()) dt = scene_.time.dtMax > 0 ? scene_.time.dtMax
+                                                                         : scene_.time.tEnd;
+  dtNext_ = dt;
+}
+
+void Simulation::checkHealth(double dt) const {
+  const double dtMin = scene_.time.dtMin > 0.0 ? scene_.time.dtMin : 1e-12 * scene_.time.tEnd;
+  auto fail = [&](std::size_t i, const std::string& reason) {
+    std::ostringstream s;
+    s << "step " << step_ << ", t = " << time_ << " s: " << reason << ": "
+      << describeParticle(p_, i);
+    throw SimulationError(s.str());
+  };
+  for (std::size_t i = 0; i < p_.numReal; ++i) {
+    bool finite = std::isfinite(p_.rho[i]) && std::isfinite(p_.u[i]) && std::isfinite(p_.h[i]) &&
+                  std::isfinite(p_.P[i]);
+    for (int d = 0; d < 3; ++d)
+      finite = finite && std::isfinite(p_.x[d][i]) && std::isfinite(p_.v[d][i]);
+    if (!finite) fail(i, "non-finite state (NaN or infinity)");
+    if (!(p_.rho[i] > 0.0)) fail(i, "non-positive density");
+    if (p_.u[i] < 0.0) fail(i, "negative specific internal energy");
+    if (p_.h[i] < hMin_) fail(i, "smoothing length collapsed below h_min_factor x initial h");
+  }
+  if (dt < dtMin) {
+    std::size_t worst = 0;
+    for (std::size_t i = 1; i < p_.numReal; ++i)
+      if (p_.cs[i] / p_.h[i] > p_.cs[worst] / p_.h[worst]) worst = i;
+    std::ostringstream s;
+    s << "time step " << dt << " s fell below dt_min " << dtMin << " s";
+    fail(worst, s.str());
+  }
+}
+
+void Simulation::step(double limit) {
+  if (step_ % kSortInterval == 0) sortForLocality();
+  double dt = dtNext_;
+  if (time_ + dt > limit) {
+    dt = limit - time_;
+    limiter_ = StepLimiter::Output;
+  }
+  const std::size_t n = p_.numReal;
+  const SphOptions& sph = scene_.sph;
+  const bool continuity = sph.density == DensityMethod::Continuity;
+  const bool seedH = sph.smoothingLength == SmoothingLengthMethod::Seed;
+  const int dim = ws_.dim;
+  for (int d = 0; d < 3; ++d) vHalf_[d].resize(n);
+  uHalf_.resize(n);
+  rhoHalf_.resize(continuity ? n : 0);
+  hHalf_.resize(seedH ? n : 0);
+  const double half = 0.5 * dt;
+
+  // Kick to the half step, drift positions, predict v and u (and rho, h) to the full step.
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int d = 0; d < dim; ++d) {
+      vHalf_[d][i] = p_.v[d][i] + half * p_.a[d][i];
+      p_.x[d][i] += dt * vHalf_[d][i];
+      p_.v[d][i] = vHalf_[d][i] + half * p_.a[d][i];
+    }
+    uHalf_[i] = p_.u[i] + half * p_.du_dt[i];
+    p_.u[i] = uHalf_[i] + half * p_.du_dt[i];
+    if (continuity) {
+      rhoHalf_[i] = p_.rho[i] + half * p_.drho_dt[i];
+      p_.rho[i] = rhoHalf_[i] + half * p_.drho_dt[i];
+    }
+    if (seedH) {
+      hHalf_[i] = p_.h[i] + half * p_.dh_dt[i];
+      p_.h[i] = hHalf_[i] + half * p_.dh_dt[i];
+    }
+  }
+  boundaries_.confine(p_, &vHalf_);
+  if (continuity && sph.smoothingLength == SmoothingLengthMethod::Neighbours)
+    setSmoothingFromDensity(p_, ws_);
+
+  evaluateDerivatives();
+
+  // Second kick with the new derivatives.
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int d = 0; d < dim; ++d) p_.v[d][i] = vHalf_[d][i] + half * p_.a[d][i];
+    p_.u[i] = uHalf_[i] + half * p_.du_dt[i];
+    if (continuity) p_.rho[i] = rhoHalf_[i] + half * p_.drho_dt[i];
+    if (seedH) p_.h[i] = hHalf_[i] + half * p_.dh_dt[i];
+  }
+  // Pressure and sound speed of the final state, for the snapshot and the next time step.
+  evaluateEquationOfState();
+  time_ += dt;
+  ++step_;
+  lastDt_ = dt;
+  const StepLimiter clamped = limiter_;
+  computeNextTimestep();
+  if (clamped == StepLimiter::Output) limiter_ = StepLimiter::Output;
+  checkHealth(dtNext_);
+}
+
+}  // namespace ejecta

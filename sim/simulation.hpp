@@ -1,0 +1,78 @@
+#pragma once
+// Simulation: the particles, the materials and the physics terms a scene asks for, advanced in
+// time by kick-drift-kick leapfrog (the seed's eq. 1.9 in its synchronised form):
+//   v^(n+1/2) = v^n + a^n dt/2,  x^(n+1) = x^n + v^(n+1/2) dt,  v^(n+1) = v^(n+1/2) + a^(n+1) dt/2
+// and likewise for u (and rho with continuity density, h with the seed's dh/dt). Derivatives at
+// n+1 use velocities and energies predicted to n+1. Every step: neighbours -> density pass ->
+// equation of state -> force pass; then the time-step criteria and a health check.
+#include <stdexcept>
+#include <string>
+
+#include "sim/boundaries.hpp"
+#include "sim/conservation.hpp"
+#include "sim/hydro_workspace.hpp"
+#include "sim/materials.hpp"
+#include "sim/particles.hpp"
+#include "sim/scene.hpp"
+
+namespace ejecta {
+
+// A bad numerical state: the message names the step, time, particle and its state.
+class SimulationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Which criterion set the last time step.
+enum class StepLimiter { Courant, Force, Output };
+
+class Simulation {
+ public:
+  Simulation(Scene scene, ParticleSet particles, MaterialTable materials, int numThreads);
+
+  // Computes the derivatives of the current state and the next time step. Call once before the
+  // first step() of a new run; a restarted run instead calls resume() with stored values.
+  void initialise();
+  void resume(double time, long step, double dtNext);
+
+  // Advances one step of min(next time step, limit - time). Throws SimulationError on a bad
+  // state (the particles then hold the offending state, for a last snapshot).
+  void step(double limit);
+
+  double time() const { return time_; }
+  long stepCount() const { return step_; }
+  double dtNext() const { return dtNext_; }
+  double lastDt() const { return lastDt_; }
+  StepLimiter lastLimiter() const { return limiter_; }
+  const Scene& scene() const { return scene_; }
+  const ParticleSet& particles() const { return p_; }
+  ParticleSet& particles() { return p_; }
+  const MaterialTable& materials() const { return materials_; }
+  ConservedTotals totals() const { return conservedTotals(p_); }
+  double meanNeighbours() const;
+
+ private:
+  void evaluateDerivatives();
+  void evaluateEquationOfState();
+  void computeNextTimestep();
+  void checkHealth(double dt) const;
+  void sortForLocality();
+
+  Scene scene_;
+  ParticleSet p_;
+  MaterialTable materials_;
+  Boundaries boundaries_;
+  HydroWorkspace ws_;
+  double time_ = 0.0;
+  long step_ = 0;
+  double dtNext_ = 0.0;
+  double lastDt_ = 0.0;
+  StepLimiter limiter_ = StepLimiter::Courant;
+  double hMin_ = 0.0;
+  std::vector<std::vector<std::size_t>> materialMembers_;
+  // Leapfrog half-step state.
+  Vec3Array vHalf_;
+  std::vector<double> uHalf_, rhoHalf_, hHalf_;
+};
+
+}  // namespace ejecta
