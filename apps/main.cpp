@@ -1,1 +1,47 @@
-int main() { return 0; }
+// ejecta: hypervelocity-impact and subsurface-explosion simulation. See README.md.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+
+#include "apps/commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"ejecta: SPH hydrocode for impacts and explosions on asteroids"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "ejecta 0.1.0");
+
+  ejecta::app::RunArgs run;
+  CLI::App* runCmd = app.add_subcommand("run", "Run a scene (no SCENE: the embedded default scene)");
+  runCmd->add_option("scene", run.scene, "Scene file (TOML)");
+  runCmd->add_option("--out,-o", run.outDir, "Output directory (default runs/<scene name>)");
+  runCmd->add_option("--set", run.overrides, "Override a scene key: --set sph.kernel=wendland_c2")
+      ->take_all();
+  runCmd->add_option("--threads,-j", run.threads, "OpenMP threads (default: all cores)");
+  runCmd->add_option("--restart", run.restartDir, "Resume the run in RUN_DIR from its last snapshot");
+  runCmd->add_flag("--quiet,-q", run.quiet, "No progress line");
+
+  ejecta::app::VerifyArgs verify;
+  CLI::App* verifyCmd = app.add_subcommand("verify", "Run a verification problem against its exact solution");
+  verifyCmd->add_option("name", verify.name, "Problem name (see --list)");
+  verifyCmd->add_flag("--list", verify.list, "List the problems");
+  verifyCmd->add_flag("--json", verify.json, "Print the error measures as JSON");
+  verifyCmd->add_option("--threads,-j", verify.threads, "OpenMP threads");
+  verifyCmd->add_option("--set", verify.overrides, "Override a key of the problem's scene")->take_all();
+  verifyCmd->add_option("--resolutions", verify.resolutions, "Number of resolutions for the convergence study");
+  verifyCmd->add_option("--out,-o", verify.outDir, "Write profiles (CSV) here");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    if (*runCmd) return ejecta::app::runCommand(run);
+    if (*verifyCmd) return ejecta::app::verifyCommand(verify);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "ejecta: error: %s\n", e.what());
+    return 1;
+  }
+  return 1;
+}

@@ -1,0 +1,72 @@
+// `ejecta run`: load a scene (or the embedded default), run it, write outputs, print a summary.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "apps/commands.hpp"
+#include "sim/embedded_scenes.hpp"
+#include "sim/run.hpp"
+#include "sim/scene.hpp"
+
+namespace fs = std::filesystem;
+
+namespace ejecta::app {
+
+namespace {
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw SceneError(path + ": cannot open scene file");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void printSummary(const RunOutcome& r, const std::string& outDir) {
+  const RunSummary& s = r.summary;
+  std::printf("ejecta: %s %s: %zu particles, %ld steps to t = %.6g s in %.2f s wall (%d threads)\n",
+              s.scene.c_str(), r.ok ? "completed" : "FAILED", s.particles, s.steps, s.tEnd,
+              s.wallSeconds, s.threads);
+  std::printf("  energy: initial %.8g J, final %.8g J, relative error %.3g\n", s.energy.initial,
+              s.energy.final, s.energy.relativeError);
+  if (!outDir.empty())
+    std::printf("  outputs: %s/{summary.json, energy.csv, snapshots.xdmf, snapshots/}\n",
+                outDir.c_str());
+  if (!r.ok) std::fprintf(stderr, "ejecta: run failed: %s\n", r.error.c_str());
+}
+
+}  // namespace
+
+int runCommand(const RunArgs& args) {
+  RunOptions options;
+  options.threads = args.threads;
+  options.progress = !args.quiet && interactive();
+  if (!args.restartDir.empty()) {
+    if (!args.scene.empty() || !args.overrides.empty())
+      throw std::runtime_error("--restart takes the scene and overrides stored in the run; "
+                               "do not give a SCENE or --set with it");
+    const RunOutcome r = restartRun(args.restartDir, options);
+    printSummary(r, args.restartDir);
+    return r.ok ? 0 : 2;
+  }
+  std::string source, path;
+  if (args.scene.empty()) {
+    source = std::string(findEmbeddedScene("default"));
+    path = "<default scene>";
+  } else {
+    path = args.scene;
+    source = readText(path);
+  }
+  const Scene scene = parseScene(source, path, args.overrides);
+  options.outDir = args.outDir.empty() ? (fs::path("runs") / scene.name).string() : args.outDir;
+  options.sceneSource = source;
+  options.overrides = args.overrides;
+  std::fprintf(stderr, "ejecta: running '%s' (%s) -> %s\n", scene.name.c_str(), path.c_str(),
+               options.outDir.c_str());
+  const RunOutcome r = runScene(scene, options);
+  printSummary(r, options.outDir);
+  return r.ok ? 0 : 2;
+}
+
+}  // namespace ejecta::app

@@ -1,0 +1,303 @@
+#include "sim/run.hpp"
+
+#include <omp.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <algorithm>
+#include <sstream>
+
+#include "sim/bodies.hpp"
+#include "sim/kernel.hpp"
+#include "sim/snapshot.hpp"
+#include "sim/xdmf.hpp"
+
+namespace fs = std::filesystem;
+
+namespace ejecta {
+
+namespace {
+
+constexpr const char* kOverridePrefix = "# ejecta-override: ";
+
+std::string snapshotName(long index) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "snap_%04ld.h5", index);
+  return buf;
+}
+
+// Scene text with the --set overrides recorded as comment lines, so a restart rebuilds the
+// same scene from the snapshot alone.
+std::string sourceWithOverrides(const RunOptions& o) {
+  std::string text;
+  for (const std::string& s : o.overrides) text += kOverridePrefix + s + "\n";
+  return text + o.sceneSource;
+}
+
+std::vector<std::string> overridesFromSource(const std::string& source) {
+  std::vector<std::string> out;
+  std::istringstream in(source);
+  std::string line;
+  const std::string prefix = kOverridePrefix;
+  while (std::getline(in, line))
+    if (line.rfind(prefix, 0) == 0) out.push_back(line.substr(prefix.size()));
+  return out;
+}
+
+std::string formatDuration(double seconds) {
+  char buf[32];
+  if (seconds < 60) std::snprintf(buf, sizeof buf, "%.0fs", seconds);
+  else if (seconds < 3600) std::snprintf(buf, sizeof buf, "%.0fm%02.0fs", std::floor(seconds / 60), std::fmod(seconds, 60));
+  else std::snprintf(buf, sizeof buf, "%.0fh%02.0fm", std::floor(seconds / 3600), std::fmod(seconds / 60, 60));
+  return buf;
+}
+
+// Output state of one run directory.
+class RunOutputs {
+ public:
+  explicit RunOutputs(const RunOptions& o) : options_(o) {
+    if (o.outDir.empty()) return;
+    fs::create_directories(fs::path(o.outDir) / "snapshots");
+  }
+  bool enabled() const { return !options_.outDir.empty(); }
+
+  void openEnergyLog(bool append) {
+    if (!enabled()) return;
+    const fs::path path = fs::path(options_.outDir) / "energy.csv";
+    energy_.open(path, append ? std::ios::app : std::ios::trunc);
+    if (!append)
+      energy_ << "step,time_s,dt_s,kinetic_J,internal_J,total_J,relative_error,"
+                 "momentum_x,momentum_y,momentum_z\n";
+    energy_.precision(12);
+  }
+  void logEnergy(const Simulation& sim, double e0) {
+    if (!energy_.is_open()) return;
+    const ConservedTotals t = sim.totals();
+    energy_ << sim.stepCount() << ',' << sim.time() << ',' << sim.lastDt() << ',' << t.kinetic
+            << ',' << t.internal << ',' << t.total() << ',' << (t.total() - e0) / std::abs(e0)
+            << ',' << t.momentum[0] << ',' << t.momentum[1] << ',' << t.momentum[2] << '\n';
+  }
+  void writeSnapshot(const Simulation& sim, SnapshotInfo info) {
+    if (!enabled()) return;
+    energy_.flush();
+    const std::string name = snapshotName(info.snapshotIndex);
+    info.sceneSource = sourceWithOverrides(options_);
+    ejecta::writeSnapshot((fs::path(options_.outDir) / "snapshots" / name).string(),
+                          sim.particles(), info);
+    xdmf_.push_back({"snapshots/" + name, info.time, sim.particles().numReal, info.geometry});
+    writeXdmfSeries((fs::path(options_.outDir) / "snapshots.xdmf").string(), xdmf_);
+  }
+  void setSeries(std::vector<XdmfEntry> entries) { xdmf_ = std::move(entries); }
+
+ private:
+  const RunOptions& options_;
+  std::ofstream energy_;
+  std::vector<XdmfEntry> xdmf_;
+};
+
+class ProgressLine {
+ public:
+  explicit ProgressLine(bool on) : on_(on) {}
+  void update(const Simulation& sim, double wallSeconds, bool force = false) {
+    if (!on_) return;
+    if (!force && wallSeconds - last_ < 0.5) return;
+    last_ = wallSeconds;
+    const double tEnd = sim.scene().time.tEnd;
+    const double fraction = std::clamp(sim.time() / tEnd, 0.0, 1.0);
+    const double eta = fraction > 0 ? wallSeconds * (1 - fraction) / fraction : 0.0;
+    std::fprintf(stderr, "\r[ejecta] step %ld  t = %.4g s  dt = %.3g s  %5.1f%%  ETA %s    ",
+                 sim.stepCount(), sim.time(), sim.lastDt(), 100 * fraction,
+                 formatDuration(eta).c_str());
+    std::fflush(stderr);
+  }
+  void finish() {
+    if (on_) std::fprintf(stderr, "\n");
+  }
+
+ private:
+  bool on_;
+  double last_ = -1.0;
+};
+
+}  // namespace
+
+int resolveThreads(int requested) {
+  return requested > 0 ? requested : omp_get_max_threads();
+}
+
+namespace {
+
+bool reached(double time, double target) { return time >= target * (1.0 - 1e-12); }
+
+// The time loop shared by fresh and restarted runs. `info` holds the output cadence state.
+// `atSnapshot`: the current state is already on disk (a restart), so no final duplicate.
+RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs,
+                 SnapshotInfo info, double wallBefore, bool atSnapshot) {
+  const Scene& scene = sim.scene();
+  const double tEnd = scene.time.tEnd;
+  const double interval = scene.output.snapshotInterval;
+  const bool snapshots = scene.output.snapshots;
+  const auto start = std::chrono::steady_clock::now();
+  auto wall = [&] {
+    return wallBefore +
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  ProgressLine progress(options.progress);
+  RunOutcome outcome;
+  bool lastWritten = atSnapshot;
+  auto snapshot = [&] {
+    info.time = sim.time();
+    info.step = sim.stepCount();
+    info.dtNext = sim.dtNext();
+    info.wallSeconds = wall();
+    if (snapshots) outputs.writeSnapshot(sim, info);
+    ++info.snapshotIndex;
+  };
+  try {
+    while (!reached(sim.time(), tEnd)) {
+      if (scene.time.maxSteps > 0 && sim.stepCount() >= scene.time.maxSteps)
+        throw SimulationError("reached time.max_steps = " + std::to_string(scene.time.maxSteps) +
+                              " at t = " + std::to_string(sim.time()) + " s before t_end");
+      const double limit = std::min(tEnd, info.nextOutputTime);
+      sim.step(limit);
+      lastWritten = false;
+      outputs.logEnergy(sim, info.initialEnergy);
+      if (options.observer) options.observer(sim);
+      progress.update(sim, wall());
+      if (reached(sim.time(), info.nextOutputTime) && !reached(sim.time(), tEnd)) {
+        info.nextOutputTime = interval > 0 ? info.nextOutputTime + interval : tEnd;
+        snapshot();
+        lastWritten = true;
+      }
+    }
+    if (!lastWritten) {
+      info.nextOutputTime = tEnd;
+      snapshot();
+    }
+  } catch (const SimulationError& e) {
+    outcome.ok = false;
+    outcome.error = e.what();
+    try {
+      snapshot();  // the offending state, for diagnosis
+    } catch (const std::exception& w) {
+      outcome.error += std::string(" (and the last snapshot could not be written: ") + w.what() + ")";
+    }
+  }
+  progress.update(sim, wall(), true);
+  progress.finish();
+
+  const ConservedTotals t = sim.totals();
+  RunSummary& s = outcome.summary;
+  s.scene = scene.name;
+  s.particles = sim.particles().numReal;
+  s.steps = sim.stepCount();
+  s.tEnd = sim.time();
+  s.wallSeconds = wall();
+  s.threads = omp_get_max_threads();
+  s.energy.initial = info.initialEnergy;
+  s.energy.final = t.total();
+  s.energy.relativeError = (t.total() - info.initialEnergy) / std::abs(info.initialEnergy);
+  s.momentum.initial = info.initialMomentum;
+  s.momentum.final = t.momentum;
+  s.status = outcome.ok ? RunSummary::Status::Completed : RunSummary::Status::Failed;
+  s.message = outcome.error;
+  s.extras.push_back({"geometry", std::string(geometryName(scene.geometry))});
+  s.extras.push_back({"kernel", std::string(kernelName(scene.sph.kernel))});
+  s.extras.push_back({"mean_neighbours", sim.meanNeighbours()});
+  s.extras.push_back({"particle_updates_per_second",
+                      s.wallSeconds > 0 ? static_cast<double>(s.particles) *
+                                              static_cast<double>(s.steps) / s.wallSeconds
+                                        : 0.0});
+  if (outputs.enabled())
+    writeSummaryJson((fs::path(options.outDir) / "summary.json").string(), s);
+  return outcome;
+}
+
+}  // namespace
+
+RunOutcome runSimulation(Simulation& sim, const RunOptions& options) {
+  RunOutputs outputs(options);
+  sim.initialise();
+  const ConservedTotals t0 = sim.totals();
+  SnapshotInfo info;
+  info.geometry = sim.scene().geometry;
+  info.scene = sim.scene().name;
+  info.initialEnergy = t0.total();
+  info.initialMomentum = t0.momentum;
+  const double interval = sim.scene().output.snapshotInterval;
+  info.nextOutputTime = interval > 0 ? interval : sim.scene().time.tEnd;
+  outputs.openEnergyLog(false);
+  outputs.logEnergy(sim, info.initialEnergy);
+  if (options.observer) options.observer(sim);
+  // Snapshot 0: the initial state with its derivatives.
+  info.time = 0.0;
+  info.step = 0;
+  info.dtNext = sim.dtNext();
+  if (sim.scene().output.snapshots) outputs.writeSnapshot(sim, info);
+  info.snapshotIndex = 1;
+  return drive(sim, options, outputs, info, 0.0, false);
+}
+
+RunOutcome runScene(const Scene& scene, const RunOptions& options) {
+  const int threads = resolveThreads(options.threads);
+  MaterialTable materials = MaterialTable::fromScene(scene);
+  ParticleSet particles = buildParticles(scene, materials);
+  Simulation sim(scene, std::move(particles), std::move(materials), threads);
+  return runSimulation(sim, options);
+}
+
+RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) {
+  const fs::path dir = fs::path(runDir) / "snapshots";
+  if (!fs::is_directory(dir))
+    throw std::runtime_error("restart: '" + runDir + "' has no snapshots/ directory");
+  std::vector<fs::path> files;
+  const std::regex pattern(R"(snap_(\d{4,})\.h5)");
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (std::regex_match(entry.path().filename().string(), pattern)) files.push_back(entry.path());
+  if (files.empty()) throw std::runtime_error("restart: no snap_NNNN.h5 in '" + dir.string() + "'");
+  std::sort(files.begin(), files.end());
+
+  SnapshotInfo info;
+  ParticleSet particles = readSnapshot(files.back().string(), info);
+  RunOptions options = baseOptions;
+  options.outDir = runDir;
+  // The scene as the run was started: its text and --set overrides travel in the snapshot.
+  const std::vector<std::string> overrides = overridesFromSource(info.sceneSource);
+  options.overrides = overrides;
+  options.sceneSource.clear();
+  {
+    std::istringstream in(info.sceneSource);
+    std::string line;
+    const std::string prefix = kOverridePrefix;
+    while (std::getline(in, line))
+      if (line.rfind(prefix, 0) != 0) options.sceneSource += line + "\n";
+  }
+  Scene scene = parseScene(options.sceneSource, files.back().string() + " (stored scene)", overrides);
+  scene.sourcePath = runDir + "/scene.toml";
+
+  RunOutputs outputs(options);
+  std::vector<XdmfEntry> series;
+  for (const fs::path& f : files) {
+    SnapshotInfo earlier;
+    const ParticleSet q = f == files.back() ? ParticleSet{} : readSnapshot(f.string(), earlier);
+    const double time = f == files.back() ? info.time : earlier.time;
+    const std::size_t n = f == files.back() ? particles.numReal : q.numReal;
+    series.push_back({"snapshots/" + f.filename().string(), time, n, scene.geometry});
+  }
+  outputs.setSeries(series);
+  outputs.openEnergyLog(true);
+
+  const int threads = resolveThreads(options.threads);
+  MaterialTable materials = MaterialTable::fromScene(scene);
+  Simulation sim(scene, std::move(particles), std::move(materials), threads);
+  sim.resume(info.time, info.step, info.dtNext);
+  info.snapshotIndex += 1;
+  return drive(sim, options, outputs, info, info.wallSeconds, true);
+}
+
+}  // namespace ejecta

@@ -1,0 +1,272 @@
+#include "sim/verify/verification.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "sim/embedded_scenes.hpp"
+#include "sim/exact/riemann.hpp"
+#include "sim/exact/sedov.hpp"
+#include "sim/run.hpp"
+#include "sim/bodies.hpp"
+#include "sim/materials.hpp"
+
+namespace ejecta::verify {
+
+double ResolutionRun::metric(const std::string& name) const {
+  for (const Metric& m : metrics)
+    if (m.name == name) return m.value;
+  throw std::out_of_range("no metric '" + name + "'");
+}
+
+namespace {
+
+Scene problemScene(const std::string& name, const Options& options) {
+  const std::string key = "verification/" + name;
+  const std::string_view text = findEmbeddedScene(key);
+  if (text.empty()) throw std::logic_error("verification scene '" + key + "' is not embedded");
+  return parseScene(std::string(text), "scenes/" + key + ".toml", options.overrides);
+}
+
+struct Finished {
+  ParticleSet particles;
+  ResolutionRun run;
+  double time = 0.0;
+};
+
+// Runs the scene with every body's spacing multiplied by `coarsen`.
+Finished runAt(Scene scene, double coarsen, const Options& options) {
+  for (BodySpec& b : scene.bodies) b.spacing *= coarsen;
+  scene.output.snapshots = false;
+  const int threads = resolveThreads(options.threads);
+  MaterialTable materials = MaterialTable::fromScene(scene);
+  ParticleSet particles = buildParticles(scene, materials);
+  Simulation sim(scene, std::move(particles), std::move(materials), threads);
+  RunOptions runOptions;
+  runOptions.threads = threads;
+  runOptions.progress = options.progress;
+  const RunOutcome outcome = runSimulation(sim, runOptions);
+  if (!outcome.ok)
+    throw std::runtime_error("verification run '" + scene.name + "' failed: " + outcome.error);
+  Finished f;
+  f.particles = sim.particles();
+  f.time = sim.time();
+  f.run.spacing = scene.bodies.front().spacing;
+  f.run.particles = outcome.summary.particles;
+  f.run.steps = outcome.summary.steps;
+  f.run.wallSeconds = outcome.summary.wallSeconds;
+  f.run.energyError = outcome.summary.energy.relativeError;
+  double dp2 = 0.0, scale = 0.0;
+  for (int d = 0; d < 3; ++d) {
+    const double dp = outcome.summary.momentum.final[d] - outcome.summary.momentum.initial[d];
+    dp2 += dp * dp;
+  }
+  const ParticleSet& p = f.particles;
+  for (std::size_t i = 0; i < p.numReal; ++i)
+    scale += p.mass[i] * std::sqrt(p.v[0][i] * p.v[0][i] + p.v[1][i] * p.v[1][i] +
+                                   p.v[2][i] * p.v[2][i]);
+  f.run.momentumError = scale > 0 ? std::sqrt(dp2) / scale : 0.0;
+  return f;
+}
+
+// Runs `levels` resolutions, coarsest first: spacing x 2^(levels-1), ..., x 1 (the scene's own).
+template <typename Measure>
+Report convergenceStudy(const std::string& name, const Options& options, int defaultLevels,
+                        Measure&& measure) {
+  const Scene scene = problemScene(name, options);
+  Report report;
+  report.problem = name;
+  report.description = scene.description;
+  const int levels = options.resolutions > 0 ? options.resolutions : defaultLevels;
+  for (int k = levels - 1; k >= 0; --k) {
+    Finished f = runAt(scene, std::pow(2.0, k), options);
+    measure(scene, f);
+    report.runs.push_back(std::move(f.run));
+  }
+  // Observed order between successive runs for every L1 metric: log2(e_coarse / e_fine).
+  for (std::size_t r = 1; r < report.runs.size(); ++r)
+    for (const Metric& m : report.runs[r].metrics) {
+      if (m.name.rfind("L1_", 0) != 0) continue;
+      const double coarse = report.runs[r - 1].metric(m.name);
+      const double ratio = report.runs[r - 1].spacing / report.runs[r].spacing;
+      report.orders.push_back({"order_" + m.name + "_" + std::to_string(r),
+                               std::log(coarse / m.value) / std::log(ratio), "1"});
+    }
+  return report;
+}
+
+void writeProfile(const Options& options, const std::string& name, const ResolutionRun& run,
+                  const std::string& header, const std::vector<std::vector<double>>& rows) {
+  if (options.outDir.empty()) return;
+  std::filesystem::create_directories(options.outDir);
+  char file[256];
+  std::snprintf(file, sizeof file, "%s/%s_n%zu.csv", options.outDir.c_str(), name.c_str(),
+                run.particles);
+  std::ofstream out(file);
+  out << header << "\n";
+  out.precision(10);
+  for (const auto& row : rows) {
+    for (std::size_t c = 0; c < row.size(); ++c) out << (c ? "," : "") << row[c];
+    out << "\n";
+  }
+}
+
+// --- Sod shock tube, 1D -------------------------------------------------------------------------
+
+Report sod1d(const Options& options) {
+  return convergenceStudy("sod_1d", options, 3, [&](const Scene& scene, Finished& f) {
+    const auto& left = scene.bodies[0];
+    const auto& right = scene.bodies[1];
+    const double gamma = scene.materials[0].gamma;
+    const exact::GasState L{left.density, 0.0, left.pressure.value_or(0.0)};
+    const exact::GasState R{right.density, 0.0, right.pressure.value_or(0.0)};
+    const exact::RiemannProblem riemann(L, R, gamma);
+    const double x0 = left.shape.max[0];  // the interface
+    const ParticleSet& p = f.particles;
+    double volume = 0, eRho = 0, eV = 0, eP = 0;
+    std::vector<std::vector<double>> rows;
+    for (std::size_t i = 0; i < p.numReal; ++i) {
+      const exact::GasState s = riemann.sample((p.x[0][i] - x0) / f.time);
+      const double w = p.mass[i] / p.rho[i];
+      volume += w;
+      eRho += w * std::abs(p.rho[i] - s.rho);
+      eV += w * std::abs(p.v[0][i] - s.u);
+      eP += w * std::abs(p.P[i] - s.p);
+      rows.push_back({p.x[0][i], p.rho[i], p.v[0][i], p.P[i], s.rho, s.u, s.p});
+    }
+    std::sort(rows.begin(), rows.end());
+    f.run.metrics = {{"L1_density", eRho / volume, "kg/m^3"},
+                     {"L1_velocity", eV / volume, "m/s"},
+                     {"L1_pressure", eP / volume, "Pa"}};
+    writeProfile(options, "sod_1d", f.run, "x,rho,v,P,rho_exact,v_exact,P_exact", rows);
+  });
+}
+
+// --- Sedov-Taylor blast -------------------------------------------------------------------------
+
+// Geometry j of the similarity solution and distance from the blast centre.
+int sedovSymmetry(Geometry g) { return g == Geometry::Planar ? 2 : (g == Geometry::Line ? 1 : 3); }
+
+double blastDistance(const ParticleSet& p, std::size_t i, const std::array<double, 3>& c, int dim) {
+  double r2 = 0.0;
+  for (int d = 0; d < dim; ++d) {
+    const double dx = p.x[d][i] - c[d];
+    r2 += dx * dx;
+  }
+  return std::sqrt(r2);
+}
+
+template <int Dummy = 0>
+Report sedov(const std::string& name, const Options& options, int defaultLevels) {
+  return convergenceStudy(name, options, defaultLevels, [&](const Scene& scene, Finished& f) {
+    const ParticleSet& p = f.particles;
+    const int dim = spatialDimension(scene.geometry);
+    const double gamma = scene.materials[0].gamma;
+    const double rho0 = scene.bodies[0].density;
+    const auto& deposit = scene.deposits.at(0);
+    const exact::SedovSolution sedovExact(sedovSymmetry(scene.geometry), gamma, deposit.energy,
+                                          rho0);
+    const double Rs = sedovExact.shockRadius(f.time);
+    // Mean absolute density error over particles (the SPH-EXA benchmark's L1) and a binned
+    // radial profile for the shock position and peak.
+    const double binWidth = f.run.spacing;
+    const int bins = static_cast<int>(1.5 * Rs / binWidth) + 1;
+    std::vector<double> binRho(bins, 0.0), binMass(bins, 0.0);
+    double l1 = 0.0;
+    std::vector<std::vector<double>> rows;
+    for (std::size_t i = 0; i < p.numReal; ++i) {
+      const double r = blastDistance(p, i, deposit.center, dim);
+      const exact::SedovState s = sedovExact.at(r, f.time);
+      l1 += std::abs(p.rho[i] - s.rho);
+      const int b = static_cast<int>(r / binWidth);
+      if (b < bins) { binRho[b] += p.mass[i] * p.rho[i]; binMass[b] += p.mass[i]; }
+      rows.push_back({r, p.rho[i], p.P[i], s.rho, s.p});
+    }
+    l1 /= static_cast<double>(p.numReal);
+    int peak = 0;
+    for (int b = 0; b < bins; ++b) {
+      if (binMass[b] > 0) binRho[b] /= binMass[b];
+      if (binRho[b] > binRho[peak]) peak = b;
+    }
+    const double rPeak = (peak + 0.5) * binWidth;
+    std::sort(rows.begin(), rows.end());
+    f.run.metrics = {
+        {"L1_density", l1, "kg/m^3"},
+        {"shock_radius", rPeak, "m"},
+        {"shock_radius_exact", Rs, "m"},
+        {"shock_radius_error", (rPeak - Rs) / Rs, "1"},
+        {"peak_density_ratio", binRho[peak] / sedovExact.postShockDensity(), "1"},
+    };
+    writeProfile(options, name, f.run, "r,rho,P,rho_exact,P_exact", rows);
+  });
+}
+
+}  // namespace
+
+const std::vector<Problem>& problems() {
+  static const std::vector<Problem> list = {
+      {"sod_1d", "Sod shock tube, 1D, t = 0.2 s, against the exact Riemann solution", 3, sod1d},
+      {"sedov_2d", "Sedov-Taylor blast, 2D planar (cylindrical blast), against the similarity solution", 2,
+       [](const Options& o) { return sedov("sedov_2d", o, 2); }},
+      {"sedov_rz", "Sedov-Taylor blast, RZ (spherical blast), the seed's case", 2,
+       [](const Options& o) { return sedov("sedov_rz", o, 2); }},
+      {"sedov_3d", "Sedov-Taylor blast, 3D (spherical blast)", 1,
+       [](const Options& o) { return sedov("sedov_3d", o, 1); }},
+  };
+  return list;
+}
+
+Report runProblem(const std::string& name, const Options& options) {
+  for (const Problem& p : problems())
+    if (p.name == name) return p.run(options);
+  std::string known;
+  for (const Problem& p : problems()) known += (known.empty() ? "" : ", ") + p.name;
+  throw std::invalid_argument("unknown verification problem '" + name + "' (known: " + known + ")");
+}
+
+std::string reportJson(const Report& r) {
+  std::ostringstream s;
+  s.precision(8);
+  s << "{\n  \"problem\": \"" << r.problem << "\",\n  \"description\": \"" << r.description
+    << "\",\n  \"runs\": [\n";
+  for (std::size_t k = 0; k < r.runs.size(); ++k) {
+    const ResolutionRun& run = r.runs[k];
+    s << "    {\"spacing\": " << run.spacing << ", \"particles\": " << run.particles
+      << ", \"steps\": " << run.steps << ", \"wall_seconds\": " << run.wallSeconds
+      << ", \"energy_error\": " << run.energyError << ", \"momentum_error\": " << run.momentumError;
+    for (const Metric& m : run.metrics) s << ", \"" << m.name << "\": " << m.value;
+    s << "}" << (k + 1 < r.runs.size() ? "," : "") << "\n";
+  }
+  s << "  ],\n  \"orders\": {";
+  for (std::size_t k = 0; k < r.orders.size(); ++k)
+    s << (k ? ", " : "") << "\"" << r.orders[k].name << "\": " << r.orders[k].value;
+  s << "}\n}\n";
+  return s.str();
+}
+
+std::string reportTable(const Report& r) {
+  std::ostringstream s;
+  s << r.problem << ": " << r.description << "\n";
+  char line[512];
+  for (const ResolutionRun& run : r.runs) {
+    std::snprintf(line, sizeof line, "  N = %8zu  spacing = %-10.4g steps = %-6ld wall = %7.2f s  dE/E = %+.2e  dP = %.1e\n",
+                  run.particles, run.spacing, run.steps, run.wallSeconds, run.energyError,
+                  run.momentumError);
+    s << line;
+    for (const Metric& m : run.metrics) {
+      std::snprintf(line, sizeof line, "      %-22s %14.6g %s\n", m.name.c_str(), m.value, m.unit.c_str());
+      s << line;
+    }
+  }
+  for (const Metric& m : r.orders) {
+    std::snprintf(line, sizeof line, "  %-30s %8.3f\n", m.name.c_str(), m.value);
+    s << line;
+  }
+  return s.str();
+}
+
+}  // namespace ejecta::verify
