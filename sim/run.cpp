@@ -136,8 +136,9 @@ bool reached(double time, double target) { return time >= target * (1.0 - 1e-12)
 
 // The time loop shared by fresh and restarted runs. `info` holds the output cadence state.
 // `atSnapshot`: the current state is already on disk (a restart), so no final duplicate.
+// `fresh`: a new run: initialise the simulation and write snapshot 0 first.
 RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs,
-                 SnapshotInfo info, double wallBefore, bool atSnapshot) {
+                 SnapshotInfo info, double wallBefore, bool atSnapshot, bool fresh) {
   const Scene& scene = sim.scene();
   const double tEnd = scene.time.tEnd;
   const double interval = scene.output.snapshotInterval;
@@ -159,6 +160,16 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
     ++info.snapshotIndex;
   };
   try {
+    if (fresh) {
+      // Derivatives of the initial state; snapshot 0 holds it with them.
+      sim.initialise();
+      const ConservedTotals t0 = sim.totals();
+      info.initialEnergy = t0.total();
+      info.initialMomentum = t0.momentum;
+      outputs.logEnergy(sim, info.initialEnergy);
+      if (options.observer) options.observer(sim);
+      snapshot();
+    }
     while (!reached(sim.time(), tEnd)) {
       if (scene.time.maxSteps > 0 && sim.stepCount() >= scene.time.maxSteps)
         throw SimulationError("reached time.max_steps = " + std::to_string(scene.time.maxSteps) +
@@ -222,25 +233,13 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
 
 RunOutcome runSimulation(Simulation& sim, const RunOptions& options) {
   RunOutputs outputs(options);
-  sim.initialise();
-  const ConservedTotals t0 = sim.totals();
   SnapshotInfo info;
   info.geometry = sim.scene().geometry;
   info.scene = sim.scene().name;
-  info.initialEnergy = t0.total();
-  info.initialMomentum = t0.momentum;
   const double interval = sim.scene().output.snapshotInterval;
   info.nextOutputTime = interval > 0 ? interval : sim.scene().time.tEnd;
   outputs.openEnergyLog(false);
-  outputs.logEnergy(sim, info.initialEnergy);
-  if (options.observer) options.observer(sim);
-  // Snapshot 0: the initial state with its derivatives.
-  info.time = 0.0;
-  info.step = 0;
-  info.dtNext = sim.dtNext();
-  if (sim.scene().output.snapshots) outputs.writeSnapshot(sim, info);
-  info.snapshotIndex = 1;
-  return drive(sim, options, outputs, info, 0.0, false);
+  return drive(sim, options, outputs, info, 0.0, false, true);
 }
 
 RunOutcome runScene(const Scene& scene, const RunOptions& options) {
@@ -297,7 +296,7 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
   Simulation sim(scene, std::move(particles), std::move(materials), threads);
   sim.resume(info.time, info.step, info.dtNext);
   info.snapshotIndex += 1;
-  return drive(sim, options, outputs, info, info.wallSeconds, true);
+  return drive(sim, options, outputs, info, info.wallSeconds, true, false);
 }
 
 }  // namespace ejecta
