@@ -12,7 +12,7 @@ namespace ejecta {
 
 namespace {
 
-constexpr double kSearchMargin = 1.15;   // candidates fetched out to 1.15 x the support
+constexpr double kSearchMargin = 1.08;   // candidates fetched out to 1.08 x the support
 constexpr double kNewtonTolerance = 1e-7;
 constexpr int kNewtonMaxIterations = 60;
 constexpr double kMaxGrowthPerStep = 2.0;  // h may change by at most this factor in one pass
@@ -31,13 +31,21 @@ void kernelSums(const ParticleSet& p, const std::vector<std::uint32_t>& cand,
   S = 0.0;
   dS = 0.0;
   const double reach = kKernelSupport * h;
+  const double hInv = 1.0 / h;
+  const double hInvD = powD<D>(hInv);
   for (std::size_t k = 0; k < cand.size(); ++k) {
     const double r = dist[k];
     if (r >= reach) continue;
     const double m = p.mass[cand[k]];
-    S += m * kernelValue<K, D>(r, h);
-    dS += m * kernelDerivativeH<K, D>(r, h);
+    double w, dw;
+    K<D>::shape(r * hInv, w, dw);
+    S += m * w;
+    dS -= m * (D * w + r * hInv * dw);
   }
+  // W = sigma/h^D w(q), dW/dh = -sigma/h^(D+1) (D w + q w').
+  const double norm = K<D>::sigma * hInvD;
+  S *= norm;
+  dS *= norm * hInv;
 }
 
 template <template <int> class K, int D, bool RZ>
@@ -98,6 +106,7 @@ void densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
 
       // Final sums at h: density, grad-h term, gather list, divergence, curl, continuity rate.
       const double reach = kKernelSupport * h;
+      const double hInv = 1.0 / h;
       double S = 0.0, dS = 0.0, vdotgrad = 0.0;
       double curl[3] = {0.0, 0.0, 0.0};
       list.clear();
@@ -107,10 +116,12 @@ void densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
         const std::uint32_t j = cand[k];
         list.push_back(j);
         const double m = p.mass[j];
-        S += m * kernelValue<K, D>(r, h);
-        dS += m * kernelDerivativeH<K, D>(r, h);
+        double w, dw;
+        K<D>::shape(r * hInv, w, dw);
+        S += m * w;
+        dS -= m * (D * w + r * hInv * dw);
         if (r == 0.0) continue;
-        const double f = m * kernelDerivative<K, D>(r, h) / r;  // grad W = x_ij f / m
+        const double f = m * dw / r;  // grad W = x_ij f sigma / (m h^(D+1)), scaled below
         double dx[3] = {0.0, 0.0, 0.0}, dv[3] = {0.0, 0.0, 0.0};
         for (int d = 0; d < D; ++d) {
           dx[d] = xi[d] - p.x[d][j];
@@ -124,6 +135,15 @@ void densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
           curl[1] += (dv[2] * dx[0] - dv[0] * dx[2]) * f;
           curl[2] += (dv[0] * dx[1] - dv[1] * dx[0]) * f;
         }
+      }
+      {
+        // Kernel normalisation applied once: W = sigma/h^D w, dW/dr = sigma/h^(D+1) w',
+        // dW/dh = -sigma/h^(D+1) (D w + q w').
+        const double norm = K<D>::sigma * powD<D>(hInv);
+        S *= norm;
+        dS *= norm * hInv;
+        vdotgrad *= norm * hInv;
+        for (double& c : curl) c *= norm * hInv;
       }
       ws.lists.storeGather(t, i, list.data(), list.size());
       ws.neighbourCount[i] = static_cast<std::uint32_t>(list.size());

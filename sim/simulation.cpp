@@ -17,7 +17,7 @@ namespace {
 
 // Ghost layers and neighbour search reach this far beyond 2h, so the density pass may grow h by
 // this factor without a second ghost build (it checks, and rebuilds if h grew more).
-constexpr double kGhostMargin = 1.25;
+constexpr double kGhostMargin = 1.1;
 // Particles are reordered by cell every this many steps, for memory locality of the pair loops.
 constexpr long kSortInterval = 16;
 

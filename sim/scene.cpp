@@ -1,0 +1,796 @@
+// Scene files: TOML parsed by toml++, overrides applied to the tree, then every key checked
+// against the schema below and converted to SI. Messages follow "FILE:LINE: key 'a.b': reason".
+#include "sim/scene.hpp"
+
+#include <toml++/toml.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <utility>
+
+#include "sim/units.hpp"
+
+namespace ejecta {
+
+namespace {
+
+using KeyList = std::vector<std::string_view>;
+
+// The schema: allowed keys of every table, by schema path ("bodies[]" = any element).
+const std::map<std::string_view, KeyList>& schemaTables() {
+  static const std::map<std::string_view, KeyList> tables = [] {
+    const KeyList axis{"min", "max", "boundary", "lower", "upper"};
+    return std::map<std::string_view, KeyList>{
+        {"",
+         {"scene", "domain", "sph", "time", "output", "materials", "bodies", "energy_deposits"}},
+        {"scene", {"name", "description", "dimension"}},
+        {"domain", {"x", "y", "z"}},
+        {"domain.x", axis},
+        {"domain.y", axis},
+        {"domain.z", axis},
+        {"sph",
+         {"kernel", "density", "smoothing_length", "eta", "relaxation", "courant", "force_factor",
+          "h_min_factor", "viscosity", "conductivity"}},
+        {"sph.viscosity", {"alpha", "beta", "epsilon", "balsara"}},
+        {"sph.conductivity", {"alpha"}},
+        {"time", {"t_end", "dt_max", "dt_min", "max_steps"}},
+        {"output", {"snapshot_interval", "snapshots"}},
+        {"materials[]", {"name", "eos", "gamma"}},
+        {"bodies[]",
+         {"name", "material", "shape", "min", "max", "center", "radius", "inner_radius",
+          "outer_radius", "point", "normal", "lattice", "spacing", "density", "pressure",
+          "internal_energy", "velocity"}},
+        {"energy_deposits[]", {"name", "energy", "center", "radius", "profile", "width"}},
+    };
+  }();
+  return tables;
+}
+
+const KeyList* allowedKeys(std::string_view schemaPath) {
+  const auto& tables = schemaTables();
+  const auto it = tables.find(schemaPath);
+  return it == tables.end() ? nullptr : &it->second;
+}
+
+bool contains(const KeyList& keys, std::string_view k) {
+  for (std::string_view a : keys)
+    if (a == k) return true;
+  return false;
+}
+
+std::string joinKeys(const KeyList& keys) {
+  std::string out;
+  for (std::string_view k : keys) out += (out.empty() ? "" : ", ") + std::string(k);
+  return out;
+}
+
+std::string typeName(const toml::node& n) {
+  switch (n.type()) {
+    case toml::node_type::table: return "a table";
+    case toml::node_type::array: return "an array";
+    case toml::node_type::string: return "a string";
+    case toml::node_type::integer: return "an integer";
+    case toml::node_type::floating_point: return "a floating-point number";
+    case toml::node_type::boolean: return "a boolean";
+    default: return "a date/time";
+  }
+}
+
+// Enum spellings in scene files.
+template <typename E>
+using EnumNames = std::vector<std::pair<std::string_view, E>>;
+
+template <typename E>
+std::string enumList(const EnumNames<E>& names) {
+  std::string out;
+  for (const auto& [name, value] : names)
+    out += (out.empty() ? "'" : ", '") + std::string(name) + "'";
+  return out;
+}
+
+// Where messages point. Values set by --set carry their own source name (see applyOverride).
+class Context {
+ public:
+  Context(std::string sourceName, const toml::table& root)
+      : source_(std::move(sourceName)), root_(&root) {}
+  const std::string& source() const { return source_; }
+
+  std::string where(const toml::node* n) const {
+    if (n && n != root_) {
+      const auto& src = n->source();
+      if (src.path && *src.path != source_) return source_ + ": " + *src.path;
+      if (src.begin.line > 0) return source_ + ":" + std::to_string(src.begin.line);
+    }
+    return source_ + ":1";  // the document itself (e.g. a missing top-level table)
+  }
+
+  [[noreturn]] void fail(const toml::node* at, std::string_view key,
+                         const std::string& reason) const {
+    throw SceneError(where(at) + ": key '" + std::string(key) + "': " + reason);
+  }
+
+ private:
+  std::string source_;
+  const toml::table* root_;
+};
+
+// Typed, checked access to one table of the scene. Unknown keys are rejected on construction.
+class TableReader {
+ public:
+  TableReader(const Context& ctx, const toml::table& tbl, std::string path, std::string schema)
+      : ctx_(ctx), tbl_(tbl), path_(std::move(path)) {
+    const KeyList* allowed = allowedKeys(schema);
+    for (auto&& [k, v] : tbl_) {
+      if (!allowed || !contains(*allowed, k.str()))
+        ctx_.fail(&v, key(k.str()),
+                  "unknown key; allowed keys here: " + (allowed ? joinKeys(*allowed) : "none"));
+    }
+  }
+
+  const toml::table& table() const { return tbl_; }
+  std::string key(std::string_view k) const {
+    return path_.empty() ? std::string(k) : path_ + "." + std::string(k);
+  }
+  const toml::node* find(std::string_view k) const { return tbl_.get(k); }
+  bool has(std::string_view k) const { return find(k) != nullptr; }
+
+  [[noreturn]] void fail(std::string_view k, const std::string& reason) const {
+    const toml::node* n = find(k);
+    ctx_.fail(n ? n : &tbl_, key(k), reason);
+  }
+  void check(bool ok, std::string_view k, const std::string& reason) const {
+    if (!ok) fail(k, reason);
+  }
+  const toml::node& require(std::string_view k) const {
+    const toml::node* n = find(k);
+    if (!n) ctx_.fail(&tbl_, key(k), "required key is missing");
+    return *n;
+  }
+
+  std::optional<std::string> optString(std::string_view k) const {
+    const toml::node* n = find(k);
+    if (!n) return std::nullopt;
+    if (!n->is_string()) fail(k, "expected a string, got " + typeName(*n));
+    return n->value<std::string>();
+  }
+  std::string requireString(std::string_view k) const {
+    require(k);
+    return *optString(k);
+  }
+
+  std::optional<bool> optBool(std::string_view k) const {
+    const toml::node* n = find(k);
+    if (!n) return std::nullopt;
+    if (!n->is_boolean()) fail(k, "expected true or false, got " + typeName(*n));
+    return n->value<bool>();
+  }
+
+  std::optional<long> optInteger(std::string_view k) const {
+    const toml::node* n = find(k);
+    if (!n) return std::nullopt;
+    if (!n->is_integer()) fail(k, "expected an integer, got " + typeName(*n));
+    return static_cast<long>(*n->value<std::int64_t>());
+  }
+
+  // A number (SI) or a quantity string ("10 km/s") of dimension `dim`.
+  double quantityOf(const toml::node& n, const std::string& fullKey, Dimension dim) const {
+    if (n.is_integer() || n.is_floating_point()) {
+      const double x = *n.value<double>();
+      if (!std::isfinite(x)) ctx_.fail(&n, fullKey, "must be finite");
+      return x;
+    }
+    if (n.is_string()) {
+      try {
+        return parseQuantity(*n.value<std::string>(), dim);
+      } catch (const UnitError& e) {
+        ctx_.fail(&n, fullKey, e.what());
+      }
+    }
+    const std::string unit = siUnit(dim);
+    ctx_.fail(&n, fullKey,
+              "expected " + describeDimension(dim) + " as a number" +
+                  (unit.empty() ? "" : " (SI) or a string such as \"1 " + unit + "\"") + ", got " +
+                  typeName(n));
+  }
+  std::optional<double> optQuantity(std::string_view k, Dimension dim) const {
+    const toml::node* n = find(k);
+    if (!n) return std::nullopt;
+    return quantityOf(*n, key(k), dim);
+  }
+  double requireQuantity(std::string_view k, Dimension dim) const {
+    return quantityOf(require(k), key(k), dim);
+  }
+
+  // A vector with exactly `n` components (the scene's dimension); unused components are 0.
+  std::optional<std::array<double, 3>> optVector(std::string_view k, Dimension dim, int n,
+                                                 std::string_view layout) const {
+    const toml::node* node = find(k);
+    if (!node) return std::nullopt;
+    const toml::array* arr = node->as_array();
+    if (!arr) fail(k, "expected an array " + std::string(layout) + ", got " + typeName(*node));
+    if (static_cast<int>(arr->size()) != n)
+      fail(k, "expected " + std::to_string(n) + " component" + (n == 1 ? "" : "s") + " " +
+                  std::string(layout) + ", got " + std::to_string(arr->size()));
+    std::array<double, 3> out{};
+    for (int i = 0; i < n; ++i)
+      out[i] = quantityOf(*arr->get(static_cast<std::size_t>(i)),
+                          key(k) + "[" + std::to_string(i) + "]", dim);
+    return out;
+  }
+
+  template <typename E>
+  std::optional<E> optEnum(std::string_view k, const EnumNames<E>& names) const {
+    const std::optional<std::string> text = optString(k);
+    if (!text) return std::nullopt;
+    for (const auto& [name, value] : names)
+      if (name == *text) return value;
+    fail(k, "unknown value '" + *text + "'; allowed: " + enumList(names));
+  }
+
+  const toml::table* optTable(std::string_view k) const {
+    const toml::node* n = find(k);
+    if (!n) return nullptr;
+    if (!n->is_table()) fail(k, "expected a table, got " + typeName(*n));
+    return n->as_table();
+  }
+
+  // An array of tables ([[k]]); each element is returned with its index.
+  std::vector<const toml::table*> tableArray(std::string_view k) const {
+    std::vector<const toml::table*> out;
+    const toml::node* n = find(k);
+    if (!n) return out;
+    const toml::array* arr = n->as_array();
+    if (!arr)
+      fail(k, "expected an array of tables ([[" + std::string(k) + "]]), got " + typeName(*n));
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      const toml::node* e = arr->get(i);
+      if (!e->is_table())
+        ctx_.fail(e, key(k) + "[" + std::to_string(i) + "]",
+                  "expected a table, got " + typeName(*e));
+      out.push_back(e->as_table());
+    }
+    return out;
+  }
+
+  const Context& context() const { return ctx_; }
+
+ private:
+  const Context& ctx_;
+  const toml::table& tbl_;
+  std::string path_;
+};
+
+std::string positiveMessage(double v, Dimension d) {
+  return "must be positive (got " + formatQuantity(v, d) + ")";
+}
+std::string nonNegativeMessage(double v, Dimension d) {
+  return "must not be negative (got " + formatQuantity(v, d) + ")";
+}
+
+// ---------------------------------------------------------------------------------------------
+// --set overrides
+
+struct PathPart {
+  std::string key;                   // empty for an index
+  std::optional<std::size_t> index;  // "[i]"
+};
+
+std::vector<PathPart> splitKeyPath(std::string_view path) {
+  std::vector<PathPart> parts;
+  std::size_t pos = 0;
+  while (pos < path.size()) {
+    if (path[pos] == '[') {
+      const std::size_t close = path.find(']', pos);
+      if (close == std::string_view::npos || close == pos + 1 || close > pos + 9 || parts.empty())
+        return {};
+      std::size_t idx = 0;
+      for (std::size_t i = pos + 1; i < close; ++i) {
+        if (path[i] < '0' || path[i] > '9') return {};
+        idx = idx * 10 + static_cast<std::size_t>(path[i] - '0');
+      }
+      parts.push_back({"", idx});
+      pos = close + 1;
+      if (pos < path.size() && path[pos] == '.') ++pos;
+      continue;
+    }
+    std::size_t end = pos;
+    while (end < path.size() && path[end] != '.' && path[end] != '[') ++end;
+    if (end == pos) return {};
+    parts.push_back({std::string(path.substr(pos, end - pos)), std::nullopt});
+    pos = end;
+    if (pos < path.size() && path[pos] == '.') {
+      ++pos;
+      if (pos == path.size()) return {};
+    }
+  }
+  return parts;
+}
+
+std::string trimmed(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  return std::string(s);
+}
+
+// The override's value as a TOML node if the text is a TOML value, else as a string. Parsing
+// with `label` as the source path makes every message about this value name the --set.
+toml::table parseOverrideValue(const std::string& text, const std::string& label) {
+  try {
+    toml::table doc = toml::parse("v = " + text, label);
+    if (doc.size() == 1 && doc.contains("v")) return doc;
+  } catch (const toml::parse_error&) {
+    // not a TOML value: fall through to a string
+  }
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (static_cast<unsigned char>(c) < 0x20) {  // control characters must be escaped
+      static constexpr char kHex[] = "0123456789abcdef";
+      quoted += std::string("\\u00") + kHex[(c >> 4) & 0xF] + kHex[c & 0xF];
+      continue;
+    }
+    if (c == '"' || c == '\\') quoted += '\\';
+    quoted += c;
+  }
+  quoted += '"';
+  return toml::parse("v = " + quoted, label);
+}
+
+void applyOverride(toml::table& root, const std::string& text, const std::string& sourceName) {
+  const std::string label = "--set '" + text + "'";
+  auto bad = [&](const std::string& reason) -> SceneError {
+    return SceneError(sourceName + ": " + label + ": " + reason);
+  };
+  const std::size_t eq = text.find('=');
+  if (eq == std::string::npos) throw bad("expected KEY=VALUE");
+  const std::string keyPath = trimmed(std::string_view(text).substr(0, eq));
+  const std::vector<PathPart> parts = splitKeyPath(keyPath);
+  if (parts.empty())
+    throw bad("malformed key '" + keyPath + "' (use e.g. sph.kernel or bodies[0].spacing)");
+  toml::table valueDoc = parseOverrideValue(trimmed(std::string_view(text).substr(eq + 1)), label);
+  toml::node& value = *valueDoc.get("v");
+
+  toml::node* cur = &root;
+  std::string schema;  // schema path of `cur`
+  std::string dotted;  // key path of `cur`, for messages
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const PathPart& part = parts[i];
+    const bool last = (i + 1 == parts.size());
+    if (part.index) {
+      toml::array* arr = cur->as_array();
+      if (!arr) throw bad("key '" + dotted + "' is not an array");
+      if (*part.index >= arr->size())
+        throw bad("key '" + dotted + "' has " + std::to_string(arr->size()) +
+                  " element(s); no index " + std::to_string(*part.index));
+      dotted += "[" + std::to_string(*part.index) + "]";
+      if (allowedKeys(schema + "[]")) schema += "[]";
+      if (last) {
+        arr->replace(arr->cbegin() + static_cast<std::ptrdiff_t>(*part.index), std::move(value));
+        return;
+      }
+      cur = arr->get(*part.index);
+      continue;
+    }
+    const KeyList* allowed = allowedKeys(schema);
+    const std::string childKey = dotted.empty() ? part.key : dotted + "." + part.key;
+    if (!allowed) throw bad("key '" + dotted + "' has no sub-keys");
+    if (!contains(*allowed, part.key))
+      throw bad("unknown key '" + childKey + "'; allowed keys " +
+                (dotted.empty() ? std::string("at the top level") : "in '" + dotted + "'") + ": " +
+                joinKeys(*allowed));
+    toml::table* tbl = cur->as_table();
+    if (!tbl) throw bad("key '" + dotted + "' is not a table");
+    const std::string childSchema = schema.empty() ? part.key : schema + "." + part.key;
+    if (last) {
+      tbl->insert_or_assign(part.key, std::move(value));
+      return;
+    }
+    if (!tbl->contains(part.key)) {
+      if (!allowedKeys(childSchema)) throw bad("key '" + childKey + "' does not exist");
+      // Parsed rather than constructed so that the new table's source names this --set.
+      toml::table empty = toml::parse("t = {}", label);
+      tbl->insert_or_assign(part.key, std::move(*empty.get("t")));
+    }
+    cur = tbl->get(part.key);
+    schema = childSchema;
+    dotted = childKey;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Sections
+
+const EnumNames<BoundaryKind> kBoundaryNames{{"open", BoundaryKind::Open},
+                                             {"periodic", BoundaryKind::Periodic},
+                                             {"wall", BoundaryKind::Wall}};
+
+void readScene(const TableReader& root, Scene& scene) {
+  const toml::table* t = root.optTable("scene");
+  if (!t) root.fail("scene", "required table [scene] is missing");
+  const TableReader r(root.context(), *t, "scene", "scene");
+  scene.name = r.requireString("name");
+  r.check(!scene.name.empty(), "name", "must not be empty");
+  scene.description = r.optString("description").value_or("");
+  const std::string dim = r.requireString("dimension");
+  if (!parseGeometry(dim, scene.geometry))
+    r.fail("dimension", "unknown value '" + dim + "'; allowed: '1d', '2d', 'rz', '3d'");
+}
+
+void readAxis(const TableReader& domain, int axis, Geometry geometry, AxisBounds& out) {
+  static constexpr std::string_view kAxisNames[3] = {"x", "y", "z"};
+  const std::string_view name = kAxisNames[axis];
+  const toml::table* t = domain.optTable(name);
+  if (!t) return;  // unbounded and open
+  const int dim = spatialDimension(geometry);
+  if (axis >= dim)
+    domain.fail(name, "axis not used in a " + std::string(geometryName(geometry)) +
+                          " scene (allowed: " + (dim == 1 ? "x" : "x, y") + ")");
+  const bool rAxis = (geometry == Geometry::Axisymmetric && axis == 0);
+  const TableReader r(domain.context(), *t, domain.key(name), "domain." + std::string(name));
+
+  out.min = r.requireQuantity("min", Dimension::Length);
+  out.max = r.requireQuantity("max", Dimension::Length);
+  r.check(out.min < out.max, "max",
+          "max must exceed min (got min " + formatQuantity(out.min, Dimension::Length) + ", max " +
+              formatQuantity(out.max, Dimension::Length) + ")");
+  if (r.has("boundary") && (r.has("lower") || r.has("upper")))
+    r.fail("boundary", "give either 'boundary' or 'lower'/'upper', not both");
+
+  if (rAxis) {
+    r.check(out.min == 0.0, "min", "must be 0 in an rz scene (r starts at the axis)");
+    if (const auto lower = r.optString("lower"))
+      r.check(*lower == "axis", "lower",
+              "the lower r boundary is the axis; write 'axis' or omit it");
+    const std::string_view side = r.has("boundary") ? "boundary" : "upper";
+    out.upper = r.optEnum(side, kBoundaryNames).value_or(BoundaryKind::Open);
+    r.check(out.upper != BoundaryKind::Periodic, side, "r cannot be periodic (r = 0 is the axis)");
+    out.lower = BoundaryKind::Wall;  // the axis: mirror images, as at a wall
+  } else {
+    const auto both = r.optEnum("boundary", kBoundaryNames);
+    out.lower = both ? *both : r.optEnum("lower", kBoundaryNames).value_or(BoundaryKind::Open);
+    out.upper = both ? *both : r.optEnum("upper", kBoundaryNames).value_or(BoundaryKind::Open);
+    if ((out.lower == BoundaryKind::Periodic) != (out.upper == BoundaryKind::Periodic))
+      r.fail(r.has("upper") ? "upper" : "lower", "periodic must be on both sides");
+  }
+  out.bounded = true;
+}
+
+void readDomain(const TableReader& root, Scene& scene) {
+  const toml::table* t = root.optTable("domain");
+  if (!t) return;
+  const TableReader r(root.context(), *t, "domain", "domain");
+  for (int axis = 0; axis < 3; ++axis) readAxis(r, axis, scene.geometry, scene.domain[axis]);
+}
+
+void readSph(const TableReader& root, SphOptions& sph) {
+  const toml::table* t = root.optTable("sph");
+  if (!t) return;
+  const TableReader r(root.context(), *t, "sph", "sph");
+  const Dimension one = Dimension::None;
+  sph.kernel = r.optEnum<KernelKind>("kernel", {{"cubic_spline", KernelKind::CubicSpline},
+                                                {"wendland_c2", KernelKind::WendlandC2},
+                                                {"wendland_c4", KernelKind::WendlandC4}})
+                   .value_or(sph.kernel);
+  sph.density = r.optEnum<DensityMethod>("density", {{"summation", DensityMethod::Summation},
+                                                     {"continuity", DensityMethod::Continuity}})
+                    .value_or(sph.density);
+  sph.smoothingLength = r.optEnum<SmoothingLengthMethod>(
+                             "smoothing_length", {{"neighbours", SmoothingLengthMethod::Neighbours},
+                                                  {"seed", SmoothingLengthMethod::Seed},
+                                                  {"constant", SmoothingLengthMethod::Constant}})
+                            .value_or(sph.smoothingLength);
+  sph.eta = r.optQuantity("eta", one).value_or(sph.eta);
+  r.check(sph.eta > 0.0, "eta", positiveMessage(sph.eta, one));
+  sph.relaxation = r.optQuantity("relaxation", one).value_or(sph.relaxation);
+  r.check(sph.relaxation > 0.0 && sph.relaxation <= 1.0, "relaxation", "must be in (0, 1]");
+  sph.courant = r.optQuantity("courant", one).value_or(sph.courant);
+  r.check(sph.courant > 0.0 && sph.courant <= 1.0, "courant", "must be in (0, 1]");
+  sph.forceFactor = r.optQuantity("force_factor", one).value_or(sph.forceFactor);
+  r.check(sph.forceFactor > 0.0, "force_factor", positiveMessage(sph.forceFactor, one));
+  sph.hMinFactor = r.optQuantity("h_min_factor", one).value_or(sph.hMinFactor);
+  r.check(sph.hMinFactor >= 0.0 && sph.hMinFactor < 1.0, "h_min_factor", "must be in [0, 1)");
+
+  if (const toml::table* vt = r.optTable("viscosity")) {
+    const TableReader v(root.context(), *vt, "sph.viscosity", "sph.viscosity");
+    sph.alpha = v.optQuantity("alpha", one).value_or(sph.alpha);
+    v.check(sph.alpha >= 0.0, "alpha", nonNegativeMessage(sph.alpha, one));
+    sph.beta = v.optQuantity("beta", one).value_or(sph.beta);
+    v.check(sph.beta >= 0.0, "beta", nonNegativeMessage(sph.beta, one));
+    sph.epsilon = v.optQuantity("epsilon", one).value_or(sph.epsilon);
+    v.check(sph.epsilon > 0.0, "epsilon",
+            positiveMessage(sph.epsilon, one) + "; it keeps the viscosity finite as r -> 0");
+    sph.balsara = v.optBool("balsara").value_or(sph.balsara);
+  }
+  if (const toml::table* ct = r.optTable("conductivity")) {
+    const TableReader c(root.context(), *ct, "sph.conductivity", "sph.conductivity");
+    sph.conductivity = c.optQuantity("alpha", one).value_or(sph.conductivity);
+    c.check(sph.conductivity >= 0.0, "alpha", nonNegativeMessage(sph.conductivity, one));
+  }
+}
+
+void readTime(const TableReader& root, TimeOptions& time) {
+  const toml::table* t = root.optTable("time");
+  if (!t) root.fail("time", "required table [time] is missing (it must give t_end)");
+  const TableReader r(root.context(), *t, "time", "time");
+  const Dimension s = Dimension::Time;
+  time.tEnd = r.requireQuantity("t_end", s);
+  r.check(time.tEnd > 0.0, "t_end", positiveMessage(time.tEnd, s));
+  time.dtMax = r.optQuantity("dt_max", s).value_or(time.dtMax);
+  r.check(time.dtMax >= 0.0, "dt_max", nonNegativeMessage(time.dtMax, s) + "; 0 = unlimited");
+  time.dtMin = r.optQuantity("dt_min", s).value_or(time.dtMin);
+  r.check(time.dtMin >= 0.0, "dt_min", nonNegativeMessage(time.dtMin, s));
+  if (time.dtMax > 0.0) r.check(time.dtMin < time.dtMax, "dt_min", "must be below dt_max");
+  time.maxSteps = r.optInteger("max_steps").value_or(time.maxSteps);
+  r.check(time.maxSteps >= 0, "max_steps", "must not be negative; 0 = unlimited");
+}
+
+void readOutput(const TableReader& root, OutputOptions& out) {
+  const toml::table* t = root.optTable("output");
+  if (!t) return;
+  const TableReader r(root.context(), *t, "output", "output");
+  out.snapshotInterval = r.optQuantity("snapshot_interval", Dimension::Time).value_or(0.0);
+  r.check(out.snapshotInterval >= 0.0, "snapshot_interval",
+          nonNegativeMessage(out.snapshotInterval, Dimension::Time) + "; 0 = first and last only");
+  out.snapshots = r.optBool("snapshots").value_or(out.snapshots);
+}
+
+int lineOf(const toml::node& n) { return static_cast<int>(n.source().begin.line); }
+
+// Names within one list must be unique: bodies and deposits are reported by name.
+void checkUniqueName(const TableReader& r, std::set<std::string>& seen, const std::string& name) {
+  r.check(!name.empty(), "name", "must not be empty");
+  r.check(seen.insert(name).second, "name", "'" + name + "' is already used by an earlier entry");
+}
+
+void readMaterials(const TableReader& root, Scene& scene) {
+  const std::vector<const toml::table*> list = root.tableArray("materials");
+  if (list.empty()) root.fail("materials", "at least one [[materials]] entry is required");
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const TableReader r(root.context(), *list[i], "materials[" + std::to_string(i) + "]",
+                        "materials[]");
+    MaterialSpec m;
+    m.line = lineOf(*list[i]);
+    m.name = r.requireString("name");
+    checkUniqueName(r, names, m.name);
+    m.eos = r.optEnum<std::string>("eos", {{"ideal_gas", "ideal_gas"}}).value_or("ideal_gas");
+    m.gamma = r.optQuantity("gamma", Dimension::None).value_or(m.gamma);
+    r.check(m.gamma > 1.0, "gamma", "must exceed 1 (got " + formatQuantity(m.gamma, {}) + ")");
+    scene.materials.push_back(std::move(m));
+  }
+}
+
+std::string vectorLayout(Geometry g) {
+  switch (g) {
+    case Geometry::Line: return "[x]";
+    case Geometry::Planar: return "[x, y]";
+    case Geometry::Axisymmetric: return "[r, z]";
+    case Geometry::Spatial: return "[x, y, z]";
+  }
+  return "";
+}
+
+// Bounding box of the part of the domain a shape may occupy ([-inf, inf] where unbounded).
+struct Box {
+  std::array<double, 3> lo{}, hi{};
+};
+
+Box domainBox(const Scene& scene) {
+  Box b;
+  const int dim = spatialDimension(scene.geometry);
+  for (int d = 0; d < 3; ++d) {
+    const AxisBounds& a = scene.domain[d];
+    b.lo[d] = (d < dim && a.bounded) ? a.min : -INFINITY;
+    b.hi[d] = (d < dim && a.bounded) ? a.max : INFINITY;
+  }
+  if (scene.geometry == Geometry::Axisymmetric) b.lo[0] = 0.0;
+  return b;
+}
+
+void readShape(const TableReader& r, const Scene& scene, ShapeSpec& shape) {
+  static const EnumNames<ShapeKind> kShapes{{"box", ShapeKind::Box},
+                                            {"sphere", ShapeKind::Sphere},
+                                            {"shell", ShapeKind::Shell},
+                                            {"half_space", ShapeKind::HalfSpace}};
+  static const std::map<ShapeKind, KeyList> kShapeKeys{
+      {ShapeKind::Box, {"min", "max"}},
+      {ShapeKind::Sphere, {"center", "radius"}},
+      {ShapeKind::Shell, {"center", "inner_radius", "outer_radius"}},
+      {ShapeKind::HalfSpace, {"point", "normal"}}};
+  r.require("shape");
+  shape.kind = *r.optEnum("shape", kShapes);
+  const std::string shapeName = r.table().get("shape")->value<std::string>().value_or("");
+  const KeyList& own = kShapeKeys.at(shape.kind);
+  for (const auto& [kind, keys] : kShapeKeys)
+    for (std::string_view k : keys)
+      if (r.has(k) && !contains(own, k))
+        r.fail(k, "not used by shape '" + shapeName + "' (it takes " + joinKeys(own) + ")");
+  for (std::string_view k : own) r.require(k);
+
+  const int dim = spatialDimension(scene.geometry);
+  const std::string layout = vectorLayout(scene.geometry);
+  const Dimension m = Dimension::Length;
+  Box extent;  // the shape's bounding box
+  switch (shape.kind) {
+    case ShapeKind::Box:
+      shape.min = *r.optVector("min", m, dim, layout);
+      shape.max = *r.optVector("max", m, dim, layout);
+      for (int d = 0; d < dim; ++d)
+        r.check(shape.min[d] < shape.max[d], "max",
+                "every component must exceed min's (component " + std::to_string(d) + ")");
+      extent = {shape.min, shape.max};
+      break;
+    case ShapeKind::Sphere:
+    case ShapeKind::Shell: {
+      shape.center = *r.optVector("center", m, dim, layout);
+      const char* outerKey = shape.kind == ShapeKind::Sphere ? "radius" : "outer_radius";
+      shape.radius = r.requireQuantity(outerKey, m);
+      r.check(shape.radius > 0.0, outerKey, positiveMessage(shape.radius, m));
+      if (shape.kind == ShapeKind::Shell) {
+        shape.innerRadius = r.requireQuantity("inner_radius", m);
+        r.check(shape.innerRadius >= 0.0, "inner_radius", nonNegativeMessage(shape.innerRadius, m));
+        r.check(shape.innerRadius < shape.radius, "inner_radius", "must be below outer_radius");
+      }
+      for (int d = 0; d < 3; ++d) {
+        extent.lo[d] = shape.center[d] - shape.radius;
+        extent.hi[d] = shape.center[d] + shape.radius;
+      }
+      break;
+    }
+    case ShapeKind::HalfSpace: {
+      shape.point = *r.optVector("point", m, dim, layout);
+      shape.normal = *r.optVector("normal", Dimension::None, dim, layout);
+      double norm = 0.0;
+      for (int d = 0; d < dim; ++d) norm += shape.normal[d] * shape.normal[d];
+      r.check(norm > 0.0, "normal", "must not be the zero vector");
+      for (int d = 0; d < dim; ++d) shape.normal[d] /= std::sqrt(norm);
+      // A half-space is bounded only by the domain box, so every axis must be bounded.
+      const Box dom = domainBox(scene);
+      for (int d = 0; d < dim; ++d)
+        if (!std::isfinite(dom.lo[d]) || !std::isfinite(dom.hi[d]))
+          r.fail("shape", "a half_space is clipped to the domain, but domain axis " +
+                              std::string(1, "xyz"[d]) + " is unbounded; give domain." +
+                              std::string(1, "xyz"[d]) + " min and max");
+      extent = dom;
+      // Some corner of the domain box must lie behind the plane.
+      bool anyInside = false;
+      for (int corner = 0; corner < (1 << dim); ++corner) {
+        double side = 0.0;
+        for (int d = 0; d < dim; ++d)
+          side +=
+              ((((corner >> d) & 1) ? dom.hi[d] : dom.lo[d]) - shape.point[d]) * shape.normal[d];
+        anyInside = anyInside || side <= 0.0;
+      }
+      r.check(anyInside, "point", "the half-space does not reach into the domain");
+      break;
+    }
+  }
+  const Box dom = domainBox(scene);
+  for (int d = 0; d < dim; ++d)
+    if (extent.hi[d] <= dom.lo[d] || extent.lo[d] >= dom.hi[d])
+      r.fail("shape", "the " + shapeName + " lies entirely outside the domain (axis " +
+                          std::string(1, "xyz"[d]) + ")");
+}
+
+void readBodies(const TableReader& root, Scene& scene) {
+  const std::vector<const toml::table*> list = root.tableArray("bodies");
+  if (list.empty()) root.fail("bodies", "at least one [[bodies]] entry is required");
+  static const EnumNames<LatticeKind> kLattices{{"cubic", LatticeKind::Cubic},
+                                                {"hexagonal", LatticeKind::Hexagonal}};
+  const int dim = spatialDimension(scene.geometry);
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const TableReader r(root.context(), *list[i], "bodies[" + std::to_string(i) + "]", "bodies[]");
+    BodySpec b;
+    b.line = lineOf(*list[i]);
+    b.name = r.requireString("name");
+    checkUniqueName(r, names, b.name);
+    const std::string material = r.requireString("material");
+    b.material = -1;
+    for (std::size_t m = 0; m < scene.materials.size(); ++m)
+      if (scene.materials[m].name == material) b.material = static_cast<int>(m);
+    if (b.material < 0) {
+      std::string known;
+      for (const MaterialSpec& m : scene.materials)
+        known += (known.empty() ? "'" : ", '") + m.name + "'";
+      r.fail("material", "no material named '" + material + "' (materials: " + known + ")");
+    }
+    readShape(r, scene, b.shape);
+    b.lattice = r.optEnum("lattice", kLattices).value_or(b.lattice);
+    b.spacing = r.requireQuantity("spacing", Dimension::Length);
+    r.check(b.spacing > 0.0, "spacing", positiveMessage(b.spacing, Dimension::Length));
+    b.density = r.requireQuantity("density", Dimension::Density);
+    r.check(b.density > 0.0, "density", positiveMessage(b.density, Dimension::Density));
+    b.pressure = r.optQuantity("pressure", Dimension::Pressure);
+    b.internalEnergy = r.optQuantity("internal_energy", Dimension::SpecificEnergy);
+    if (b.pressure.has_value() == b.internalEnergy.has_value())
+      r.fail(b.pressure ? "internal_energy" : "pressure",
+             "give exactly one of 'pressure' and 'internal_energy'");
+    if (b.pressure)
+      r.check(*b.pressure >= 0.0, "pressure", nonNegativeMessage(*b.pressure, Dimension::Pressure));
+    if (b.internalEnergy)
+      r.check(*b.internalEnergy >= 0.0, "internal_energy",
+              nonNegativeMessage(*b.internalEnergy, Dimension::SpecificEnergy));
+    b.velocity = r.optVector("velocity", Dimension::Velocity, dim, vectorLayout(scene.geometry))
+                     .value_or(b.velocity);
+    scene.bodies.push_back(std::move(b));
+  }
+}
+
+void readDeposits(const TableReader& root, Scene& scene) {
+  static const EnumNames<DepositProfile> kProfiles{{"top_hat", DepositProfile::TopHat},
+                                                   {"gaussian", DepositProfile::Gaussian}};
+  const std::vector<const toml::table*> list = root.tableArray("energy_deposits");
+  const int dim = spatialDimension(scene.geometry);
+  const Dimension m = Dimension::Length;
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const TableReader r(root.context(), *list[i], "energy_deposits[" + std::to_string(i) + "]",
+                        "energy_deposits[]");
+    EnergyDepositSpec e;
+    e.line = lineOf(*list[i]);
+    e.name = r.requireString("name");
+    checkUniqueName(r, names, e.name);
+    e.energy = r.requireQuantity("energy", Dimension::Energy);
+    r.check(e.energy > 0.0, "energy", positiveMessage(e.energy, Dimension::Energy));
+    r.require("center");
+    e.center = *r.optVector("center", m, dim, vectorLayout(scene.geometry));
+    if (scene.geometry == Geometry::Axisymmetric)
+      r.check(e.center[0] == 0.0, "center",
+              "in rz the deposit must be centred on the axis (r = 0)");
+    e.profile = r.optEnum("profile", kProfiles).value_or(e.profile);
+    if (e.profile == DepositProfile::TopHat) {
+      r.check(!r.has("width"), "width", "only a 'gaussian' profile takes a width");
+      e.radius = r.requireQuantity("radius", m);
+      r.check(e.radius > 0.0, "radius", positiveMessage(e.radius, m));
+    } else {
+      r.check(!r.has("radius"), "radius", "a 'gaussian' profile takes a width, not a radius");
+      e.width = r.requireQuantity("width", m);
+      r.check(e.width > 0.0, "width", positiveMessage(e.width, m));
+    }
+    scene.deposits.push_back(std::move(e));
+  }
+}
+
+Scene validate(const toml::table& doc, const std::string& sourceName) {
+  const Context ctx(sourceName, doc);
+  const TableReader root(ctx, doc, "", "");
+  Scene scene;
+  scene.sourcePath = sourceName;
+  readScene(root, scene);
+  readDomain(root, scene);
+  readSph(root, scene.sph);
+  readTime(root, scene.time);
+  readOutput(root, scene.output);
+  readMaterials(root, scene);
+  readBodies(root, scene);
+  readDeposits(root, scene);
+  return scene;
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& tomlText, const std::string& sourceName,
+                 const std::vector<std::string>& overrides) {
+  toml::table doc;
+  try {
+    doc = toml::parse(tomlText, sourceName);
+  } catch (const toml::parse_error& e) {
+    throw SceneError(sourceName + ":" + std::to_string(e.source().begin.line) +
+                     ": TOML syntax error: " + std::string(e.description()));
+  }
+  for (const std::string& o : overrides) applyOverride(doc, o, sourceName);
+  return validate(doc, sourceName);
+}
+
+Scene loadScene(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError(path + ": cannot open the scene file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parseScene(text.str(), path, overrides);
+}
+
+}  // namespace ejecta
