@@ -60,8 +60,10 @@ Finished runAt(Scene scene, double coarsen, const Options& options) {
   f.run.steps = outcome.summary.steps;
   f.run.wallSeconds = outcome.summary.wallSeconds;
   f.run.energyError = outcome.summary.energy.relativeError;
+  // RZ conserves only axial momentum (component 1); the radial one is not a conserved quantity.
+  const bool rz = scene.geometry == Geometry::Axisymmetric;
   double dp2 = 0.0, scale = 0.0;
-  for (int d = 0; d < 3; ++d) {
+  for (int d = rz ? 1 : 0; d < (rz ? 2 : 3); ++d) {
     const double dp = outcome.summary.momentum.final[d] - outcome.summary.momentum.initial[d];
     dp2 += dp * dp;
   }
