@@ -4,11 +4,14 @@
 // area-weighted radial equations of Toro ch. 17 (sec. 17.2):
 //   1. Reconstruction: limited (van Leer) slopes of rho, u, p in each cell give the boundary
 //      extrapolated states at its two faces.
-//   2. Hancock predictor: both face states are evolved by dt/2 with the primitive-variable
-//      equations  rho_t + u rho_r + rho div(u) = 0,  u_t + u u_r + p_r / rho = 0,
-//      p_t + u p_r + gamma p div(u) = 0, where div(u) = r^(1-j) d(r^(j-1) u)/dr is taken as the
-//      discrete divergence (A_R u_R - A_L u_L) / V of the cell. That form contains the geometric
-//      term (j-1) u / r and stays exact for u = a r in the first cell, where r -> 0.
+//   2. Hancock predictor: both face states are evolved by dt/2. Toro writes this step with the
+//      conservative flux difference; here it uses the primitive-variable equations (the same to
+//      second order, and the geometric terms enter naturally):
+//        rho_t + u rho_r + rho div(u) = 0,  u_t + u u_r + p_r / rho = 0,
+//        p_t + u p_r + gamma p div(u) = 0,
+//      where div(u) = r^(1-j) d(r^(j-1) u)/dr is taken as the discrete divergence
+//      (A_R u_R - A_L u_L) / V of the cell. That form contains the geometric term (j-1) u / r and
+//      stays exact for u = a r in the first cell, where r -> 0.
 //   3. Corrector: HLLC fluxes (Toro ch. 10) at every face from the evolved states, then
 //      V_i dU/dt = -(A_{i+1/2} F_{i+1/2} - A_{i-1/2} F_{i-1/2}) + S_i, where S_i is non-zero only
 //      for momentum: the integral of p dA over the cell of the half-step linear pressure, i.e.
@@ -48,17 +51,15 @@ double integerPower(double x, int n) {
 
 }  // namespace
 
-RadialRiemannSolution::RadialRiemannSolution(int j, GasState inner, GasState outer,
-                                             double radius, double gamma, double rMax,
-                                             int cells)
+RadialRiemannSolution::RadialRiemannSolution(int j, GasState inner, GasState outer, double radius,
+                                             double gamma, double rMax, int cells)
     : j_(j), gamma_(gamma), rMax_(rMax) {
   if (j < 1 || j > 3) throw std::invalid_argument("RadialRiemannSolution: j must be 1, 2 or 3");
   if (!(std::isfinite(gamma) && gamma > 1.0)) {
     throw std::invalid_argument("RadialRiemannSolution: gamma must be finite and > 1");
   }
   if (!isValidState(inner) || !isValidState(outer)) {
-    throw std::invalid_argument(
-        "RadialRiemannSolution: states need finite rho > 0, p > 0 and u");
+    throw std::invalid_argument("RadialRiemannSolution: states need finite rho > 0, p > 0 and u");
   }
   if (!(std::isfinite(rMax) && radius > 0.0 && radius < rMax)) {
     throw std::invalid_argument("RadialRiemannSolution: need 0 < radius < rMax");
@@ -102,9 +103,7 @@ RadialRiemannSolution::RadialRiemannSolution(int j, GasState inner, GasState out
   flux_.resize(n + 1);
 }
 
-double RadialRiemannSolution::faceArea(int face) const {
-  return integerPower(face * dr_, j_ - 1);
-}
+double RadialRiemannSolution::faceArea(int face) const { return integerPower(face * dr_, j_ - 1); }
 
 double RadialRiemannSolution::cellVolume(int cell) const {
   return (integerPower((cell + 1) * dr_, j_) - integerPower(cell * dr_, j_)) / j_;
@@ -149,7 +148,7 @@ double RadialRiemannSolution::fillPrimitivesWithGhosts() {
 // equals Toro's F_K + S_K (U*_K - U_K) but gives exactly zero mass and energy flux when
 // S* = 0, as at the reflecting centre.
 RadialRiemannSolution::Flux RadialRiemannSolution::hllc(const Primitive& left,
-                                                       const Primitive& right) const {
+                                                        const Primitive& right) const {
   const double g = gamma_;
   const double cL = std::sqrt(g * left.p / left.rho);
   const double cR = std::sqrt(g * right.p / right.rho);
