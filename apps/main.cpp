@@ -23,7 +23,7 @@ int main(int argc, char** argv) {
 
   ejecta::app::VerifyArgs verify;
   CLI::App* verifyCmd = app.add_subcommand("verify", "Run a verification problem against its exact solution");
-  verifyCmd->add_option("name", verify.name, "Problem name (see --list)");
+  verifyCmd->add_option("name", verify.name, "Problem name (see --list), or \"all\" for a markdown table of every problem");
   verifyCmd->add_flag("--list", verify.list, "List the problems");
   verifyCmd->add_flag("--json", verify.json, "Print the error measures as JSON");
   verifyCmd->add_option("--threads,-j", verify.threads, "OpenMP threads");

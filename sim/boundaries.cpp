@@ -70,19 +70,26 @@ void Boundaries::makeGhosts(ParticleSet& p, double supportFactor) const {
       if (distance(i) < reach) layer = std::max(layer, reach);
     }
     layer_[f] = layer;
+    // Images of every particle inside the layer, appended in index order.
+    std::vector<std::size_t> images;
     for (std::size_t i = 0; i < n; ++i) {
       const double dist = distance(i);
-      if (dist < 0.0 || dist >= layer) continue;
+      if (dist >= 0.0 && dist < layer) images.push_back(i);
+    }
+    const std::size_t first = p.size();
+    p.resize(first + images.size());
+    p.ghostSource.resize(p.numGhosts());
+    flips_.resize(p.numGhosts());
+#pragma omp parallel for schedule(static)
+    for (std::size_t k = 0; k < images.size(); ++k) {
+      const std::size_t i = images[k], g = first + k;
       const std::size_t source = i < p.numReal ? i : p.ghostSource[i - p.numReal];
-      const std::uint8_t oldFlips = i < p.numReal ? 0 : flips_[i - p.numReal];
-      const std::size_t g = p.size();
-      p.resize(g + 1);
+      std::uint8_t flips = i < p.numReal ? 0 : flips_[i - p.numReal];
       // Copy everything from particle i (itself possibly a ghost), then transform.
-      for (int k = 0; k < 3; ++k) { p.x[k][g] = p.x[k][i]; p.v[k][g] = p.v[k][i]; }
+      for (int c = 0; c < 3; ++c) { p.x[c][g] = p.x[c][i]; p.v[c][g] = p.v[c][i]; }
       p.mass[g] = p.mass[i]; p.rho[g] = p.rho[i]; p.u[g] = p.u[i]; p.h[g] = p.h[i];
       p.material[g] = p.material[i]; p.id[g] = p.id[i]; p.P[g] = p.P[i]; p.cs[g] = p.cs[i];
       p.omega[g] = p.omega[i]; p.areaDensity[g] = p.areaDensity[i];
-      std::uint8_t flips = oldFlips;
       if (face.periodic) {
         p.x[d][g] += face.upper ? -face.period : face.period;
       } else {
@@ -90,8 +97,8 @@ void Boundaries::makeGhosts(ParticleSet& p, double supportFactor) const {
         p.v[d][g] = -p.v[d][i];
         flips ^= static_cast<std::uint8_t>(1u << d);
       }
-      p.ghostSource.push_back(source);
-      flips_.push_back(flips);
+      p.ghostSource[g - p.numReal] = source;
+      flips_[g - p.numReal] = flips;
     }
   }
 }

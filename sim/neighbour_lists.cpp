@@ -63,11 +63,22 @@ void NeighbourLists::buildPairs(const ParticleSet& p, double support) {
     const double reach = support * p.h[i];
     return r2 >= reach * reach;
   };
-  // Extra partners: j reaches real i with its own kernel but i's kernel does not reach j.
+  // Extra partners: j reaches real i with its own kernel but i's kernel does not reach j. The
+  // distance tests run in parallel over contiguous ranges of j; the (i, j) pairs found are then
+  // placed in ascending j for every i, whatever the number of threads.
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(static_cast<std::size_t>(omp_get_max_threads()));
+#pragma omp parallel
+  {
+    auto& mine = found[omp_get_thread_num()];
+    mine.clear();
+#pragma omp for schedule(static)
+    for (std::size_t j = 0; j < n; ++j)
+      for (std::uint32_t i : gather(j))
+        if (i < nReal && outside(i, j)) mine.emplace_back(i, static_cast<std::uint32_t>(j));
+  }
   std::vector<std::uint32_t> extraCount(nReal, 0);
-  for (std::size_t j = 0; j < n; ++j)
-    for (std::uint32_t i : gather(j))
-      if (i < nReal && outside(i, j)) ++extraCount[i];
+  for (const auto& list : found)
+    for (const auto& [i, j] : list) ++extraCount[i];
   pairStart_.assign(nReal + 1, 0);
   for (std::size_t i = 0; i < nReal; ++i)
     pairStart_[i + 1] = pairStart_[i] + count_[i] + extraCount[i];
@@ -79,9 +90,8 @@ void NeighbourLists::buildPairs(const ParticleSet& p, double support) {
   }
   std::vector<std::size_t> fill(nReal);
   for (std::size_t i = 0; i < nReal; ++i) fill[i] = pairStart_[i] + count_[i];
-  for (std::size_t j = 0; j < n; ++j)
-    for (std::uint32_t i : gather(j))
-      if (i < nReal && outside(i, j)) pairs_[fill[i]++] = static_cast<std::uint32_t>(j);
+  for (const auto& list : found)  // threads hold ascending, contiguous ranges of j
+    for (const auto& [i, j] : list) pairs_[fill[i]++] = j;
 }
 
 template void NeighbourLists::findGhostGathers<1>(const ParticleSet&, const CellGrid&, double);

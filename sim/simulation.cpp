@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <numeric>
 #include <sstream>
 
@@ -41,6 +42,15 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
       boundaries_(scene_),
       ws_(scene_.sph, scene_.geometry) {
   ws_.numThreads = numThreads;
+  // A particle with 30x the neighbours its kernel should hold (the volume of the support in
+  // particle volumes: 2 kappa eta, pi (kappa eta)^2, 4/3 pi (kappa eta)^3) has an h that stopped
+  // tracking its density (the seed's dh/dt or constant h in a strong expansion); its pair loop
+  // would grow without bound, so the run stops with a diagnosis instead.
+  const double reach = kKernelSupport * scene_.sph.eta;
+  const double expected = ws_.dim == 1   ? 2.0 * reach
+                          : ws_.dim == 2 ? std::numbers::pi * reach * reach
+                                         : 4.0 / 3.0 * std::numbers::pi * reach * reach * reach;
+  maxNeighbours_ = static_cast<std::uint32_t>(std::max(30.0 * expected, 300.0));
   omp_set_num_threads(numThreads);
   double hMinInitial = std::numeric_limits<double>::max();
   for (std::size_t i = 0; i < p_.numReal; ++i) hMinInitial = std::min(hMinInitial, p_.h[i]);
@@ -57,6 +67,7 @@ void Simulation::initialise() {
       scene_.sph.smoothingLength == SmoothingLengthMethod::Neighbours)
     setSmoothingFromDensity(p_, ws_);
   evaluateDerivatives();
+
   computeNextTimestep();
   checkHealth(dtNext_);
 }
@@ -175,6 +186,11 @@ void Simulation::checkHealth(double dt) const {
     if (!(p_.rho[i] > 0.0)) fail(i, "non-positive density");
     if (p_.u[i] < 0.0) fail(i, "negative specific internal energy");
     if (p_.h[i] < hMin_) fail(i, "smoothing length collapsed below h_min_factor x initial h");
+    if (i < ws_.neighbourCount.size() && ws_.neighbourCount[i] > maxNeighbours_)
+      fail(i, "smoothing length grew until the particle has " +
+                  std::to_string(ws_.neighbourCount[i]) + " neighbours (limit " +
+                  std::to_string(maxNeighbours_) +
+                  "); h no longer follows the density: use sph.smoothing_length = \"neighbours\"");
   }
   if (dt < dtMin) {
     std::size_t worst = 0;

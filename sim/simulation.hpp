@@ -69,6 +69,7 @@ class Simulation {
   double lastDt_ = 0.0;
   StepLimiter limiter_ = StepLimiter::Courant;
   double hMin_ = 0.0;
+  std::uint32_t maxNeighbours_ = 1u << 30;
   std::vector<std::vector<std::size_t>> materialMembers_;
   // Leapfrog half-step state.
   Vec3Array vHalf_;

@@ -26,7 +26,9 @@ void expectSedov(const Report& r, double radiusTolerance, double minPeak, double
   // RZ checks the axial component only.
   EXPECT_LT(fine.momentumError, 1e-4);
   // Refinement must reduce the density error.
-  if (r.runs.size() > 1) EXPECT_LT(fine.metric("L1_density"), r.runs.front().metric("L1_density"));
+  if (r.runs.size() > 1) {
+    EXPECT_LT(fine.metric("L1_density"), r.runs.front().metric("L1_density"));
+  }
 }
 
 TEST(VerifySedov, Planar2D) { expectSedov(runProblem("sedov_2d", Options{}), 0.03, 0.65, 0.35); }

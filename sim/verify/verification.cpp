@@ -311,4 +311,39 @@ std::string reportTable(const Report& r) {
   return s.str();
 }
 
+std::string markdownHeader() {
+  return "| problem | N | wall [s] | L1(rho) | L1(v) | L1(P) | order L1(rho) | shock radius error | "
+         "peak rho / exact | energy error |\n"
+         "|---|---|---|---|---|---|---|---|---|---|\n";
+}
+
+std::string markdownRow(const Report& r) {
+  const ResolutionRun& run = r.runs.back();
+  auto value = [&](const std::string& name, const char* format) -> std::string {
+    for (const Metric& m : run.metrics)
+      if (m.name == name) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, format, m.value);
+        return buf;
+      }
+    return "-";
+  };
+  std::string order = "-";
+  const std::string finest = "order_L1_density_" + std::to_string(r.runs.size() - 1);
+  for (const Metric& m : r.orders)
+    if (m.name == finest) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.2f", m.value);
+      order = buf;
+    }
+  char head[160];
+  std::snprintf(head, sizeof head, "| %s | %zu | %.1f | ", r.problem.c_str(), run.particles,
+                run.wallSeconds);
+  char tail[64];
+  std::snprintf(tail, sizeof tail, " | %.1e |\n", run.energyError);
+  return head + value("L1_density", "%.4f") + " | " + value("L1_velocity", "%.4f") + " | " +
+         value("L1_pressure", "%.4f") + " | " + order + " | " +
+         value("shock_radius_error", "%+.3f") + " | " + value("peak_density_ratio", "%.2f") + tail;
+}
+
 }  // namespace ejecta::verify

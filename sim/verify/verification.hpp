@@ -57,5 +57,8 @@ Report runProblem(const std::string& name, const Options& options);
 std::string reportJson(const Report& report);
 // Human-readable table of a report.
 std::string reportTable(const Report& report);
+// Markdown table header and one row per report (its finest run), for the README.
+std::string markdownHeader();
+std::string markdownRow(const Report& report);
 
 }  // namespace ejecta::verify
