@@ -63,7 +63,9 @@ void densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
     const int t = omp_get_thread_num();
     std::vector<std::uint32_t> cand, list;
     std::vector<double> dist;
-#pragma omp for schedule(static)
+    // Dynamic chunks balance the uneven cost (large-h particles, Newton iterations); each
+    // particle is computed by one thread alone, so results do not depend on the schedule.
+#pragma omp for schedule(dynamic, 256)
     for (std::size_t i = 0; i < nReal; ++i) {
       const double xi[3] = {p.x[0][i], p.x[1][i], p.x[2][i]};
       const double mi = p.mass[i];

@@ -31,7 +31,8 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws) {
     pressureTerm[i] = p.P[i] / (p.omega[i] * p.rho[i] * sigma);
   }
 
-#pragma omp parallel for schedule(static)
+  // Dynamic chunks balance uneven pair counts; each particle is summed by one thread alone.
+#pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < nReal; ++i) {
     const double hi = p.h[i], reachI = kKernelSupport * hi;
     const double xi[3] = {p.x[0][i], p.x[1][i], p.x[2][i]};

@@ -36,7 +36,7 @@ void NeighbourLists::findGhostGathers(const ParticleSet& p, const CellGrid& grid
   {
     const int t = omp_get_thread_num();
     std::vector<std::uint32_t> found;
-#pragma omp for schedule(static)
+#pragma omp for schedule(dynamic, 256)
     for (std::size_t g = nReal; g < n; ++g) {
       found.clear();
       const double point[3] = {p.x[0][g], p.x[1][g], p.x[2][g]};
