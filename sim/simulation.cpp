@@ -190,7 +190,9 @@ void Simulation::checkHealth(double dt) const {
       fail(i, "smoothing length grew until the particle has " +
                   std::to_string(ws_.neighbourCount[i]) + " neighbours (limit " +
                   std::to_string(maxNeighbours_) +
-                  "); h no longer follows the density: use sph.smoothing_length = \"neighbours\"");
+                  "); h no longer follows the density (the seed's dh/dt or constant h in a "
+                  "strong expansion, or a particle rarefied at a contact under continuity "
+                  "density): use sph.smoothing_length = \"neighbours\" with summation density");
   }
   if (dt < dtMin) {
     std::size_t worst = 0;
