@@ -52,9 +52,13 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
                                          : 4.0 / 3.0 * std::numbers::pi * reach * reach * reach;
   maxNeighbours_ = static_cast<std::uint32_t>(std::max(30.0 * expected, 300.0));
   omp_set_num_threads(numThreads);
-  double hMinInitial = std::numeric_limits<double>::max();
-  for (std::size_t i = 0; i < p_.numReal; ++i) hMinInitial = std::min(hMinInitial, p_.h[i]);
-  hMin_ = scene_.sph.hMinFactor * hMinInitial;
+  // The collapse threshold comes from the scene (not the current h), so a restarted run checks
+  // exactly what the uninterrupted one checks.
+  double spacingMin = std::numeric_limits<double>::max();
+  for (const BodySpec& b : scene_.bodies) spacingMin = std::min(spacingMin, b.spacing);
+  if (scene_.bodies.empty())
+    for (std::size_t i = 0; i < p_.numReal; ++i) spacingMin = std::min(spacingMin, p_.h[i]);
+  hMin_ = scene_.sph.hMinFactor * scene_.sph.eta * spacingMin;
   for (std::size_t i = 0; i < p_.numReal; ++i)
     if (p_.material[i] < 0 || static_cast<std::size_t>(p_.material[i]) >= materials_.size())
       throw SimulationError("particle id " + std::to_string(p_.id[i]) +
@@ -185,7 +189,7 @@ void Simulation::checkHealth(double dt) const {
     if (!finite) fail(i, "non-finite state (NaN or infinity)");
     if (!(p_.rho[i] > 0.0)) fail(i, "non-positive density");
     if (p_.u[i] < 0.0) fail(i, "negative specific internal energy");
-    if (p_.h[i] < hMin_) fail(i, "smoothing length collapsed below h_min_factor x initial h");
+    if (p_.h[i] < hMin_) fail(i, "smoothing length collapsed below sph.h_min_factor x eta x the smallest body spacing");
     if (i < ws_.neighbourCount.size() && ws_.neighbourCount[i] > maxNeighbours_)
       fail(i, "smoothing length grew until the particle has " +
                   std::to_string(ws_.neighbourCount[i]) + " neighbours (limit " +

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include "sim/bodies.hpp"
 #include "sim/run.hpp"
@@ -133,6 +134,11 @@ TEST(Simulation, RestartMatchesAnUninterruptedRunBitForBit) {
   }
   EXPECT_TRUE(fs::exists(cut / "summary.json"));
   EXPECT_TRUE(fs::exists(cut / "snapshots.xdmf"));
+  // The energy ledger has a header and one line per step (step 0 included).
+  std::ifstream log(full / "energy.csv");
+  long lines = 0;
+  for (std::string line; std::getline(log, line);) ++lines;
+  EXPECT_EQ(lines, infoA.step + 2);
 }
 
 TEST(Simulation, NonFiniteStateStopsWithADiagnosis) {
