@@ -17,6 +17,8 @@ int verifyCommand(const VerifyArgs& args) {
     verify::Options options;
     options.threads = args.threads;
     options.overrides = args.overrides;
+    options.resolutions = args.resolutions;
+    options.outDir = args.outDir;
     std::fputs(verify::markdownHeader().c_str(), stdout);
     for (const verify::Problem& p : verify::problems()) {
       std::fputs(verify::markdownRow(verify::runProblem(p.name, options)).c_str(), stdout);

@@ -74,7 +74,10 @@ void AxisCorrection::smoothedRadius(double r, double h, double& rt, double& drt_
   const double h00 = 2 * t3 - 3 * t2 + 1, h10 = t3 - 2 * t2 + t;
   const double h01 = -2 * t3 + 3 * t2, h11 = t3 - t2;
   rt = h * (h00 * I_[k] + h10 * step * dI_[k] + h01 * I_[k + 1] + h11 * step * dI_[k + 1]);
-  drt_dr = (1.0 - t) * dI_[k] + t * dI_[k + 1];
+  // The derivative of the same Hermite curve, so rt and d rt/dr are exactly consistent.
+  const double d00 = 6 * t2 - 6 * t, d10 = 3 * t2 - 4 * t + 1;
+  const double d01 = -6 * t2 + 6 * t, d11 = 3 * t2 - 2 * t;
+  drt_dr = (d00 * I_[k] + d01 * I_[k + 1]) / step + d10 * dI_[k] + d11 * dI_[k + 1];
 }
 
 }  // namespace ejecta

@@ -58,17 +58,16 @@ void Boundaries::makeGhosts(ParticleSet& p, double supportFactor) const {
   for (std::size_t f = 0; f < faces_.size(); ++f) {
     const Face& face = faces_[f];
     const int d = face.axis;
-    auto distance = [&](std::size_t i) {
-      return face.upper ? face.position - p.x[d][i] : p.x[d][i] - face.position;
-    };
-    // Layer: the widest support among particles whose own support reaches the face. Includes
+    auto distance = [&](std::size_t i) { return faceDistance(face, p.x[d][i]); };
+    // Layer: the widest support among particles whose support reaches the face the images land
+    // beside: this face for a mirror; for a periodic face both this one (an image's own support)
+    // and the partner face across the box (the real particles the images must serve). Includes
     // ghosts made for earlier faces, which is what fills the corners.
     const std::size_t n = p.size();
     double layer = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double reach = supportFactor * p.h[i];
-      if (distance(i) < reach) layer = std::max(layer, reach);
-    }
+    for (std::size_t i = 0; i < n; ++i)
+      if (reachesLanding(face, p.x[d][i], supportFactor * p.h[i]))
+        layer = std::max(layer, supportFactor * p.h[i]);
     layer_[f] = layer;
     // Images of every particle inside the layer, appended in index order.
     std::vector<std::size_t> images;
@@ -114,14 +113,25 @@ void Boundaries::refreshGhosts(ParticleSet& p) const {
   }
 }
 
+double Boundaries::faceDistance(const Face& face, double x) {
+  return face.upper ? face.position - x : x - face.position;
+}
+
+bool Boundaries::reachesLanding(const Face& face, double x, double reach) {
+  if (faceDistance(face, x) < reach) return true;
+  if (!face.periodic) return false;
+  // The partner face: images of particles near this face are shifted across to it.
+  const double partner = face.upper ? face.position - face.period : face.position + face.period;
+  const double toPartner = face.upper ? x - partner : partner - x;
+  return toPartner < reach;
+}
+
 bool Boundaries::layersCover(const ParticleSet& p, double supportFactor) const {
   for (std::size_t f = 0; f < faces_.size(); ++f) {
     const Face& face = faces_[f];
-    const int d = face.axis;
     for (std::size_t i = 0; i < p.numReal; ++i) {
-      const double dist = face.upper ? face.position - p.x[d][i] : p.x[d][i] - face.position;
       const double reach = supportFactor * p.h[i];
-      if (dist < reach && reach > layer_[f]) return false;
+      if (reach > layer_[f] && reachesLanding(face, p.x[face.axis][i], reach)) return false;
     }
   }
   return true;

@@ -35,8 +35,6 @@ class Boundaries {
   // ghost layer built by the last makeGhosts; false means makeGhosts must run again.
   bool layersCover(const ParticleSet& p, double supportFactor) const;
 
-  bool hasGhostFaces() const { return !faces_.empty(); }
-  int dimension() const { return dim_; }
 
  private:
   struct Face {
@@ -46,6 +44,12 @@ class Boundaries {
     double position;   // coordinate of the face
     double period;     // box length, periodic faces only
   };
+  // Signed distance of coordinate x inside the face (positive inside the domain).
+  static double faceDistance(const Face& face, double x);
+  // True if a particle at x with support `reach` needs this face's images: it reaches the face
+  // (or, for a periodic face, the partner face where the images land).
+  static bool reachesLanding(const Face& face, double x, double reach);
+
   Geometry geometry_;
   int dim_;
   std::array<AxisBounds, 3> domain_;

@@ -27,15 +27,16 @@ double powD(double x) {
 // Sum of m_j W and m_j dW/dh over the candidates within the support of h.
 template <template <int> class K, int D>
 void kernelSums(const ParticleSet& p, const std::vector<std::uint32_t>& cand,
-                const std::vector<double>& dist, double h, double& S, double& dS) {
+                const std::vector<double>& dist2, double h, double& S, double& dS) {
   S = 0.0;
   dS = 0.0;
   const double reach = kKernelSupport * h;
+  const double reach2 = reach * reach;
   const double hInv = 1.0 / h;
   const double hInvD = powD<D>(hInv);
   for (std::size_t k = 0; k < cand.size(); ++k) {
-    const double r = dist[k];
-    if (r >= reach) continue;
+    if (dist2[k] >= reach2) continue;
+    const double r = std::sqrt(dist2[k]);
     const double m = p.mass[cand[k]];
     double w, dw;
     K<D>::shape(r * hInv, w, dw);
@@ -49,20 +50,20 @@ void kernelSums(const ParticleSet& p, const std::vector<std::uint32_t>& cand,
 }
 
 template <template <int> class K, int D, bool RZ>
-void densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
+std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
   const SphOptions& sph = ws.sph;
   const bool summation = sph.density == DensityMethod::Summation;
   const bool tiedH = summation && sph.smoothingLength == SmoothingLengthMethod::Neighbours;
   const std::size_t nReal = p.numReal;
   const double etaD = powD<D>(sph.eta);
-  bool failed = false;
-  std::size_t failedIndex = 0;
+  std::size_t failedIndex = nReal;  // lowest failing index (a min reduction: schedule-proof)
 
-#pragma omp parallel
+#pragma omp parallel reduction(min : failedIndex)
   {
     const int t = omp_get_thread_num();
     std::vector<std::uint32_t> cand, list;
-    std::vector<double> dist;
+    std::vector<double> dist2;  // squared distances: membership tests use r^2 < (2h)^2, as
+                                // the neighbour lists do, so both agree at the support edge
     // Dynamic chunks balance the uneven cost (large-h particles, Newton iterations); each
     // particle is computed by one thread alone, so results do not depend on the schedule.
 #pragma omp for schedule(dynamic, 256)
@@ -76,14 +77,14 @@ void densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
         radius = needed * kSearchMargin;
         cand.clear();
         ws.grid.query<D>(p, xi, radius, cand);
-        dist.resize(cand.size());
+        dist2.resize(cand.size());
         for (std::size_t k = 0; k < cand.size(); ++k) {
           double r2 = 0.0;
           for (int d = 0; d < D; ++d) {
             const double dx = xi[d] - p.x[d][cand[k]];
             r2 += dx * dx;
           }
-          dist[k] = std::sqrt(r2);
+          dist2[k] = r2;
         }
       };
       fetch(kKernelSupport * h);
@@ -92,7 +93,7 @@ void densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
         // Newton iteration on f(h) = S(h) - m (eta/h)^D.
         for (int it = 0; it < kNewtonMaxIterations; ++it) {
           double S, dS;
-          kernelSums<K, D>(p, cand, dist, h, S, dS);
+          kernelSums<K, D>(p, cand, dist2, h, S, dS);
           const double target = mi * etaD / powD<D>(h);
           const double f = S - target;
           const double fp = dS + D * target / h;
@@ -108,13 +109,14 @@ void densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
 
       // Final sums at h: density, grad-h term, gather list, divergence, curl, continuity rate.
       const double reach = kKernelSupport * h;
+      const double reach2 = reach * reach;
       const double hInv = 1.0 / h;
       double S = 0.0, dS = 0.0, vdotgrad = 0.0;
       double curl[3] = {0.0, 0.0, 0.0};
       list.clear();
       for (std::size_t k = 0; k < cand.size(); ++k) {
-        const double r = dist[k];
-        if (r >= reach) continue;
+        if (dist2[k] >= reach2) continue;
+        const double r = std::sqrt(dist2[k]);
         const std::uint32_t j = cand[k];
         list.push_back(j);
         const double m = p.mass[j];
@@ -162,11 +164,16 @@ void densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
         sigma = RZ ? 2.0 * std::numbers::pi * rt * p.rho[i] : p.rho[i];
       }
       if (!(sigma > 0.0)) {
-#pragma omp critical
-        { failed = true; failedIndex = i; }
+        failedIndex = std::min(failedIndex, i);
         continue;
       }
-      const double omega = tiedH ? 1.0 + h / (D * sigma) * dS : 1.0;
+      double omega = tiedH ? 1.0 + h / (D * sigma) * dS : 1.0;
+      if constexpr (RZ) {
+        // rho = eta / (2 pi rt(h)) also depends on h through rt: with h tied to eta the
+        // Lagrangian's d rho carries f = 1 + (rt - r rt') / (2 rt) (1.5 on the axis, 1 beyond
+        // 2h), folded into omega.
+        if (tiedH) omega /= 1.0 + (rt - xi[0] * drt) / (2.0 * rt);
+      }
       p.omega[i] = omega;
       if constexpr (RZ) {
         p.areaDensity[i] = sigma;
@@ -185,21 +192,19 @@ void densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
                        : 0.0;
     }
   }
-  if (failed)
-    throw std::runtime_error("density pass: particle " + std::to_string(p.id[failedIndex]) +
-                             " has no positive density (isolated, or negative mass)");
+  return failedIndex < nReal ? std::optional<std::size_t>(failedIndex) : std::nullopt;
 }
 
 }  // namespace
 
-void runDensityPass(ParticleSet& p, HydroWorkspace& ws) {
+std::optional<std::size_t> runDensityPass(ParticleSet& p, HydroWorkspace& ws) {
   ws.neighbourCount.resize(p.numReal);
   if (ws.geometry == Geometry::Axisymmetric) {
     ws.smoothedR.resize(p.size());
     ws.dSmoothedR.resize(p.size());
   }
-  dispatchHydro(ws, [&]<template <int> class K, int D, bool RZ>() {
-    densityPassImpl<K, D, RZ>(p, ws);
+  return dispatchHydro(ws, [&]<template <int> class K, int D, bool RZ>() {
+    return densityPassImpl<K, D, RZ>(p, ws);
   });
 }
 
@@ -208,10 +213,14 @@ void setSmoothingFromDensity(ParticleSet& p, const HydroWorkspace& ws) {
   const bool rz = ws.geometry == Geometry::Axisymmetric;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.numReal; ++i) {
-    // RZ: the 2D area per particle is m / (2 pi r rho); r floored at h/4 so the axis is finite.
-    const double perVolume = rz ? 2.0 * std::numbers::pi *
-                                      std::max(p.x[0][i], 0.25 * p.h[i]) * p.rho[i]
-                                : p.rho[i];
+    // RZ: the 2D area per particle is m / (2 pi rt rho), rt the smoothed radius at the current h
+    // (finite on the axis), as in the density pass.
+    double perVolume = p.rho[i];
+    if (rz) {
+      double rt, drt;
+      ws.axis->smoothedRadius(p.x[0][i], p.h[i], rt, drt);
+      perVolume = 2.0 * std::numbers::pi * rt * p.rho[i];
+    }
     p.h[i] = ws.sph.eta * std::pow(p.mass[i] / perVolume, 1.0 / D);
   }
 }

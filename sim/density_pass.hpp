@@ -10,15 +10,17 @@
 //              summation by Newton iteration (Springel & Hernquist 2002; Price 2012, sec. 2.4);
 //              omega_i = 1 + h_i / (d rho_i) sum_j m_j dW/dh.
 // Smoothing length "seed": dh/dt = -h/(rho d) d rho/dt (eq. 1.3), applied with relaxation theta.
+#include <optional>
+
 #include "sim/hydro_workspace.hpp"
 #include "sim/particles.hpp"
 
 namespace ejecta {
 
 // Requires: ghosts made (positions, velocities, masses, h). Produces the quantities above for
-// real particles and fills ws.lists' gather lists. Throws std::runtime_error if a smoothing
-// length cannot be solved (no neighbours).
-void runDensityPass(ParticleSet& p, HydroWorkspace& ws);
+// real particles and fills ws.lists' gather lists. Returns the lowest index of a particle whose
+// kernel-summed (or integrated) density is not positive, if any; the caller reports it.
+std::optional<std::size_t> runDensityPass(ParticleSet& p, HydroWorkspace& ws);
 
 // Smoothing length for the "neighbours" method from a density (continuity mode): h from the
 // particle's own mass and density.

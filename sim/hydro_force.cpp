@@ -19,6 +19,7 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws) {
   std::vector<double> shearFactor;
   if (balsara) {
     shearFactor.resize(p.size());
+#pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < p.size(); ++i) {
       const double div = std::abs(p.divv[i]);
       shearFactor[i] = div / (div + p.curlv[i] + 1e-4 * p.cs[i] / p.h[i] + 1e-300);
@@ -26,6 +27,7 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws) {
   }
   // P / (omega rho sigma): sigma = rho (planar, 3D) or eta (RZ).
   std::vector<double> pressureTerm(p.size());
+#pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.size(); ++i) {
     const double sigma = RZ ? p.areaDensity[i] : p.rho[i];
     pressureTerm[i] = p.P[i] / (p.omega[i] * p.rho[i] * sigma);
@@ -42,7 +44,6 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws) {
     const double termI = pressureTerm[i];
     double acc[3] = {0.0, 0.0, 0.0};
     double dudtPressure = 0.0, dudtViscous = 0.0, dudtConduction = 0.0;
-    double vsigMax = ci;
 
     for (std::uint32_t j : ws.lists.pairs(i)) {
       double dx[3] = {0.0, 0.0, 0.0}, dv[3] = {0.0, 0.0, 0.0};
@@ -71,8 +72,6 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws) {
         visc = (-alpha * cij * mu + beta * mu * mu) / sigmaIJ;
         if (balsara) visc *= 0.5 * (shearFactor[i] + shearFactor[j]);
       }
-      const double wij = vdotx / r;  // approach speed along the line of centres, negative closing
-      vsigMax = std::max(vsigMax, ci + p.cs[j] - 3.0 * std::min(wij, 0.0));
 
       // Force along x_ij / r.
       const double f = mj * (termI * dWi + pressureTerm[j] * dWj + visc * dWavg) / r;
@@ -95,14 +94,12 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws) {
     }
     for (int d = 0; d < 3; ++d) p.a[d][i] = d < D ? acc[d] : 0.0;
     p.du_dt[i] = dudt;
-    ws.signalSpeed[i] = vsigMax;
   }
 }
 
 }  // namespace
 
 void runForcePass(ParticleSet& p, HydroWorkspace& ws) {
-  ws.signalSpeed.resize(p.numReal);
   dispatchHydro(ws, [&]<template <int> class K, int D, bool RZ>() {
     forcePassImpl<K, D, RZ>(p, ws);
   });

@@ -15,7 +15,7 @@
 namespace ejecta {
 
 // Requires: density pass done, EOS evaluated, ghosts refreshed, pair lists built.
-// Produces a, du_dt for real particles and ws.signalSpeed.
+// Produces a, du_dt for real particles.
 void runForcePass(ParticleSet& p, HydroWorkspace& ws);
 
 }  // namespace ejecta

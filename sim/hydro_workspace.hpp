@@ -25,8 +25,6 @@ struct HydroWorkspace {
   int numThreads = 1;
   // RZ: smoothed radius rt and d rt / d r of each particle (real and ghost).
   std::vector<double> smoothedR, dSmoothedR;
-  // Largest pairwise signal velocity seen by each real particle in the force pass [m/s].
-  std::vector<double> signalSpeed;
   // Number of neighbours in each real particle's gather list (diagnostics).
   std::vector<std::uint32_t> neighbourCount;
 };

@@ -23,10 +23,6 @@ void NeighbourLists::storeGather(int t, std::size_t i, const std::uint32_t* js,
   buffer.insert(buffer.end(), js, js + count);
 }
 
-std::size_t NeighbourLists::totalGather() const {
-  return std::accumulate(count_.begin(), count_.end(), std::size_t{0});
-}
-
 template <int D>
 void NeighbourLists::findGhostGathers(const ParticleSet& p, const CellGrid& grid,
                                       double support) {

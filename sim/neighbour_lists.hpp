@@ -33,7 +33,6 @@ class NeighbourLists {
   std::span<const std::uint32_t> pairs(std::size_t i) const {
     return {pairs_.data() + pairStart_[i], pairStart_[i + 1] - pairStart_[i]};
   }
-  std::size_t totalGather() const;
 
  private:
   std::vector<std::vector<std::uint32_t>> buffers_;

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "sim/atomic_file.hpp"
 #include "sim/bodies.hpp"
 #include "sim/kernel.hpp"
 #include "sim/snapshot.hpp"
@@ -39,14 +40,18 @@ std::string sourceWithOverrides(const RunOptions& o) {
   return text + o.sceneSource;
 }
 
-std::vector<std::string> overridesFromSource(const std::string& source) {
-  std::vector<std::string> out;
-  std::istringstream in(source);
+// Inverse of sourceWithOverrides: the scene text and the override strings.
+void splitStoredScene(const std::string& stored, std::string& source,
+                      std::vector<std::string>& overrides) {
+  source.clear();
+  overrides.clear();
+  std::istringstream in(stored);
   std::string line;
   const std::string prefix = kOverridePrefix;
-  while (std::getline(in, line))
-    if (line.rfind(prefix, 0) == 0) out.push_back(line.substr(prefix.size()));
-  return out;
+  while (std::getline(in, line)) {
+    if (line.rfind(prefix, 0) == 0) overrides.push_back(line.substr(prefix.size()));
+    else source += line + "\n";
+  }
 }
 
 std::string formatDuration(double seconds) {
@@ -66,6 +71,20 @@ class RunOutputs {
   }
   bool enabled() const { return !options_.outDir.empty(); }
 
+  // A restart resumes from a snapshot that the log has usually run past: keep the header and
+  // the rows up to `step`, so the resumed steps are not listed twice.
+  void truncateEnergyLog(long step) {
+    if (!enabled()) return;
+    const fs::path path = fs::path(options_.outDir) / "energy.csv";
+    std::ifstream in(path);
+    if (!in) return;
+    std::string kept, line;
+    if (std::getline(in, line)) kept += line + "\n";
+    while (std::getline(in, line))
+      if (std::stol(line.substr(0, line.find(','))) <= step) kept += line + "\n";
+    in.close();
+    writeFileAtomically(path, kept);
+  }
   void openEnergyLog(bool append) {
     if (!enabled()) return;
     const fs::path path = fs::path(options_.outDir) / "energy.csv";
@@ -259,25 +278,19 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
   for (const auto& entry : fs::directory_iterator(dir))
     if (std::regex_match(entry.path().filename().string(), pattern)) files.push_back(entry.path());
   if (files.empty()) throw std::runtime_error("restart: no snap_NNNN.h5 in '" + dir.string() + "'");
-  std::sort(files.begin(), files.end());
+  // By snapshot index, not by name: snap_10000 comes after snap_9999.
+  auto index = [](const fs::path& f) { return std::stol(f.stem().string().substr(5)); };
+  std::sort(files.begin(), files.end(),
+            [&](const fs::path& a, const fs::path& b) { return index(a) < index(b); });
 
   SnapshotInfo info;
   ParticleSet particles = readSnapshot(files.back().string(), info);
   RunOptions options = baseOptions;
   options.outDir = runDir;
   // The scene as the run was started: its text and --set overrides travel in the snapshot.
-  const std::vector<std::string> overrides = overridesFromSource(info.sceneSource);
-  options.overrides = overrides;
-  options.sceneSource.clear();
-  {
-    std::istringstream in(info.sceneSource);
-    std::string line;
-    const std::string prefix = kOverridePrefix;
-    while (std::getline(in, line))
-      if (line.rfind(prefix, 0) != 0) options.sceneSource += line + "\n";
-  }
+  splitStoredScene(info.sceneSource, options.sceneSource, options.overrides);
+  const std::vector<std::string>& overrides = options.overrides;
   Scene scene = parseScene(options.sceneSource, files.back().string() + " (stored scene)", overrides);
-  scene.sourcePath = runDir + "/scene.toml";
 
   RunOutputs outputs(options);
   std::vector<XdmfEntry> series;
@@ -289,6 +302,7 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
     series.push_back({"snapshots/" + f.filename().string(), time, n, scene.geometry});
   }
   outputs.setSeries(series);
+  outputs.truncateEnergyLog(info.step);
   outputs.openEnergyLog(true);
 
   const int threads = resolveThreads(options.threads);

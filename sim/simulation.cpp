@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <numeric>
 #include <sstream>
 
@@ -41,6 +42,7 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
       materials_(std::move(materials)),
       boundaries_(scene_),
       ws_(scene_.sph, scene_.geometry) {
+  if (p_.numReal == 0) throw SimulationError("scene '" + scene_.name + "' has no particles");
   ws_.numThreads = numThreads;
   // A particle with 30x the neighbours its kernel should hold (the volume of the support in
   // particle volumes: 2 kappa eta, pi (kappa eta)^2, 4/3 pi (kappa eta)^3) has an h that stopped
@@ -122,10 +124,15 @@ void Simulation::evaluateDerivatives() {
     std::vector<double> hs(p_.h.begin(), p_.h.begin() + static_cast<std::ptrdiff_t>(p_.numReal));
     std::nth_element(hs.begin(), hs.begin() + static_cast<std::ptrdiff_t>(hs.size() / 2), hs.end());
     ws_.grid.build(p_, dim, kKernelSupport * hs[hs.size() / 2]);
-    ws_.lists.reset(p_.size(), ws_.numThreads);
+    ws_.lists.reset(p_.size(), std::max(ws_.numThreads, omp_get_max_threads()));
     std::vector<double> hBefore(p_.h.begin(), p_.h.begin() + static_cast<std::ptrdiff_t>(p_.numReal));
-    runDensityPass(p_, ws_);
-    if (boundaries_.layersCover(p_, kKernelSupport) || attempt == 3) break;
+    if (const std::optional<std::size_t> bad = runDensityPass(p_, ws_))
+      failAt(*bad, "no positive density from the density pass (an isolated particle, or the "
+                   "continuity density of a particle driven to zero)");
+    if (boundaries_.layersCover(p_, kKernelSupport)) break;
+    if (attempt == 3)
+      failAt(0, "smoothing lengths near a boundary grew past four successively wider ghost "
+                "layers in one step");
     // h grew past the ghost layer: rebuild from the starting h with a wider layer.
     std::copy(hBefore.begin(), hBefore.end(), p_.h.begin());
     margin *= 1.5;
@@ -173,30 +180,34 @@ void Simulation::computeNextTimestep() {
   dtNext_ = dt;
 }
 
+void Simulation::failAt(std::size_t i, const std::string& reason) const {
+  std::ostringstream s;
+  s << "step " << step_ << ", t = " << time_ << " s: " << reason << ": "
+    << describeParticle(p_, i);
+  throw SimulationError(s.str());
+}
+
 void Simulation::checkHealth(double dt) const {
   const double dtMin = scene_.time.dtMin > 0.0 ? scene_.time.dtMin : 1e-12 * scene_.time.tEnd;
-  auto fail = [&](std::size_t i, const std::string& reason) {
-    std::ostringstream s;
-    s << "step " << step_ << ", t = " << time_ << " s: " << reason << ": "
-      << describeParticle(p_, i);
-    throw SimulationError(s.str());
-  };
   for (std::size_t i = 0; i < p_.numReal; ++i) {
     bool finite = std::isfinite(p_.rho[i]) && std::isfinite(p_.u[i]) && std::isfinite(p_.h[i]) &&
-                  std::isfinite(p_.P[i]);
+                  std::isfinite(p_.P[i]) && std::isfinite(p_.du_dt[i]);
     for (int d = 0; d < 3; ++d)
-      finite = finite && std::isfinite(p_.x[d][i]) && std::isfinite(p_.v[d][i]);
-    if (!finite) fail(i, "non-finite state (NaN or infinity)");
-    if (!(p_.rho[i] > 0.0)) fail(i, "non-positive density");
-    if (p_.u[i] < 0.0) fail(i, "negative specific internal energy");
-    if (p_.h[i] < hMin_) fail(i, "smoothing length collapsed below sph.h_min_factor x eta x the smallest body spacing");
+      finite = finite && std::isfinite(p_.x[d][i]) && std::isfinite(p_.v[d][i]) &&
+               std::isfinite(p_.a[d][i]);
+    if (!finite) failAt(i, "non-finite state (NaN or infinity)");
+    if (!(p_.rho[i] > 0.0)) failAt(i, "non-positive density");
+    if (p_.u[i] < 0.0) failAt(i, "negative specific internal energy");
+    if (!(p_.omega[i] > 0.0)) failAt(i, "non-positive grad-h factor omega (h no longer solvable)");
+    if (p_.h[i] < hMin_)
+      failAt(i, "smoothing length collapsed below sph.h_min_factor x eta x the smallest body spacing");
     if (i < ws_.neighbourCount.size() && ws_.neighbourCount[i] > maxNeighbours_)
-      fail(i, "smoothing length grew until the particle has " +
-                  std::to_string(ws_.neighbourCount[i]) + " neighbours (limit " +
-                  std::to_string(maxNeighbours_) +
-                  "); h no longer follows the density (the seed's dh/dt or constant h in a "
-                  "strong expansion, or a particle rarefied at a contact under continuity "
-                  "density): use sph.smoothing_length = \"neighbours\" with summation density");
+      failAt(i, "smoothing length grew until the particle has " +
+                    std::to_string(ws_.neighbourCount[i]) + " neighbours (limit " +
+                    std::to_string(maxNeighbours_) +
+                    "); h no longer follows the density (the seed's dh/dt or constant h in a "
+                    "strong expansion, or a particle rarefied at a contact under continuity "
+                    "density): use sph.smoothing_length = \"neighbours\" with summation density");
   }
   if (dt < dtMin) {
     std::size_t worst = 0;
@@ -204,7 +215,7 @@ void Simulation::checkHealth(double dt) const {
       if (p_.cs[i] / p_.h[i] > p_.cs[worst] / p_.h[worst]) worst = i;
     std::ostringstream s;
     s << "time step " << dt << " s fell below dt_min " << dtMin << " s";
-    fail(worst, s.str());
+    failAt(worst, s.str());
   }
 }
 

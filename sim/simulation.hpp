@@ -56,6 +56,8 @@ class Simulation {
   void evaluateEquationOfState();
   void computeNextTimestep();
   void checkHealth(double dt) const;
+  // Throws SimulationError naming the step, time, `reason` and particle i's state.
+  [[noreturn]] void failAt(std::size_t i, const std::string& reason) const;
   void sortForLocality();
 
   Scene scene_;

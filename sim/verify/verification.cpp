@@ -4,10 +4,10 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
+#include "sim/atomic_file.hpp"
 #include "sim/embedded_scenes.hpp"
 #include "sim/exact/radial_euler.hpp"
 #include "sim/exact/riemann.hpp"
@@ -106,17 +106,33 @@ void writeProfile(const Options& options, const std::string& name, const Resolut
                   const std::string& header, const std::vector<std::vector<double>>& rows) {
   if (options.outDir.empty()) return;
   std::filesystem::create_directories(options.outDir);
-  char file[256];
-  std::snprintf(file, sizeof file, "%s/%s_n%zu.csv", options.outDir.c_str(), name.c_str(),
-                run.particles);
-  std::ofstream out(file);
+  char file[64];
+  std::snprintf(file, sizeof file, "%s_n%zu.csv", name.c_str(), run.particles);
+  std::ostringstream out;
   out << header << "\n";
   out.precision(10);
   for (const auto& row : rows) {
     for (std::size_t c = 0; c < row.size(); ++c) out << (c ? "," : "") << row[c];
     out << "\n";
   }
+  writeFileAtomically(std::filesystem::path(options.outDir) / file, out.str());
 }
+
+// Volume-weighted L1 errors of density, velocity and pressure against a reference state.
+struct L1Accumulator {
+  double volume = 0, rho = 0, v = 0, P = 0;
+  void add(double weight, double rhoNum, double vNum, double PNum, const exact::GasState& ref) {
+    volume += weight;
+    rho += weight * std::abs(rhoNum - ref.rho);
+    v += weight * std::abs(vNum - ref.u);
+    P += weight * std::abs(PNum - ref.p);
+  }
+  std::vector<Metric> metrics() const {
+    return {{"L1_density", rho / volume, "kg/m^3"},
+            {"L1_velocity", v / volume, "m/s"},
+            {"L1_pressure", P / volume, "Pa"}};
+  }
+};
 
 // --- Sod shock tube, 1D -------------------------------------------------------------------------
 
@@ -130,21 +146,15 @@ Report sod1d(const Options& options) {
     const exact::RiemannProblem riemann(L, R, gamma);
     const double x0 = left.shape.max[0];  // the interface
     const ParticleSet& p = f.particles;
-    double volume = 0, eRho = 0, eV = 0, eP = 0;
+    L1Accumulator l1;
     std::vector<std::vector<double>> rows;
     for (std::size_t i = 0; i < p.numReal; ++i) {
       const exact::GasState s = riemann.sample((p.x[0][i] - x0) / f.time);
-      const double w = p.mass[i] / p.rho[i];
-      volume += w;
-      eRho += w * std::abs(p.rho[i] - s.rho);
-      eV += w * std::abs(p.v[0][i] - s.u);
-      eP += w * std::abs(p.P[i] - s.p);
+      l1.add(p.mass[i] / p.rho[i], p.rho[i], p.v[0][i], p.P[i], s);
       rows.push_back({p.x[0][i], p.rho[i], p.v[0][i], p.P[i], s.rho, s.u, s.p});
     }
     std::sort(rows.begin(), rows.end());
-    f.run.metrics = {{"L1_density", eRho / volume, "kg/m^3"},
-                     {"L1_velocity", eV / volume, "m/s"},
-                     {"L1_pressure", eP / volume, "Pa"}};
+    f.run.metrics = l1.metrics();
     writeProfile(options, "sod_1d", f.run, "x,rho,v,P,rho_exact,v_exact,P_exact", rows);
   });
 }
@@ -165,24 +175,19 @@ Report sod2d(const Options& options) {
         {outer.density, 0.0, outer.pressure.value_or(0.0)}, inner.shape.radius, gamma, rMax, 6000);
     reference.advanceTo(f.time);
     const ParticleSet& p = f.particles;
-    double volume = 0, eRho = 0, eV = 0, eP = 0;
+    L1Accumulator l1;
     std::vector<std::vector<double>> rows;
     for (std::size_t i = 0; i < p.numReal; ++i) {
-      const double r = std::hypot(p.x[0][i] - inner.shape.center[0], p.x[1][i] - inner.shape.center[1]);
+      const double dx = p.x[0][i] - inner.shape.center[0], dy = p.x[1][i] - inner.shape.center[1];
+      const double r = std::hypot(dx, dy);
       if (r >= 1.0) continue;  // the walls' corners: outside the circle the reference describes
-      const double vr = r > 0 ? (p.v[0][i] * p.x[0][i] + p.v[1][i] * p.x[1][i]) / r : 0.0;
+      const double vr = r > 0 ? (p.v[0][i] * dx + p.v[1][i] * dy) / r : 0.0;
       const exact::GasState s = reference.at(r);
-      const double w = p.mass[i] / p.rho[i];
-      volume += w;
-      eRho += w * std::abs(p.rho[i] - s.rho);
-      eV += w * std::abs(vr - s.u);
-      eP += w * std::abs(p.P[i] - s.p);
+      l1.add(p.mass[i] / p.rho[i], p.rho[i], vr, p.P[i], s);
       rows.push_back({r, p.rho[i], vr, p.P[i], s.rho, s.u, s.p});
     }
     std::sort(rows.begin(), rows.end());
-    f.run.metrics = {{"L1_density", eRho / volume, "kg/m^3"},
-                     {"L1_velocity", eV / volume, "m/s"},
-                     {"L1_pressure", eP / volume, "Pa"}};
+    f.run.metrics = l1.metrics();
     writeProfile(options, "sod_2d", f.run, "r,rho,v_r,P,rho_ref,v_ref,P_ref", rows);
   });
 }
@@ -201,7 +206,6 @@ double blastDistance(const ParticleSet& p, std::size_t i, const std::array<doubl
   return std::sqrt(r2);
 }
 
-template <int Dummy = 0>
 Report sedov(const std::string& name, const Options& options, int defaultLevels) {
   return convergenceStudy(name, options, defaultLevels, [&](const Scene& scene, Finished& f) {
     const ParticleSet& p = f.particles;
