@@ -57,7 +57,10 @@ int main(int argc, char** argv) {
   scene.time.tEnd = tEnd;
   scene.output.snapshots = false;
   const double gamma = 5.0 / 3.0;
-  scene.materials.push_back({"gas", "ideal_gas", gamma, 0});
+  MaterialSpec gas;
+  gas.name = "gas";
+  gas.gamma = gamma;
+  scene.materials.push_back(gas);
   MaterialTable materials = MaterialTable::fromScene(scene);
 
   const double E0 = 1.0, w = 0.1, dx = 1.0 / n;

@@ -1,5 +1,6 @@
 #include "sim/materials.hpp"
 
+#include "sim/eos_catalog.hpp"
 #include "sim/scene.hpp"
 
 namespace ejecta {
@@ -7,11 +8,11 @@ namespace ejecta {
 MaterialTable MaterialTable::fromScene(const Scene& scene) {
   MaterialTable table;
   for (const MaterialSpec& spec : scene.materials) {
-    if (spec.eos == "ideal_gas") {
-      table.add({spec.name, std::make_shared<IdealGas>(spec.gamma)});
-    } else {
+    try {
+      table.add({spec.name, makeEquationOfState(spec)});
+    } catch (const std::invalid_argument& e) {
       throw SceneError(scene.sourcePath + ":" + std::to_string(spec.line) + ": material '" +
-                       spec.name + "': unknown eos '" + spec.eos + "'");
+                       spec.name + "': " + e.what());
     }
   }
   return table;

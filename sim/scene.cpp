@@ -11,6 +11,7 @@
 #include <sstream>
 #include <utility>
 
+#include "sim/eos_catalog.hpp"
 #include "sim/units.hpp"
 
 namespace ejecta {
@@ -38,7 +39,8 @@ const std::map<std::string_view, KeyList>& schemaTables() {
         {"sph.conductivity", {"alpha"}},
         {"time", {"t_end", "dt_max", "dt_min", "max_steps"}},
         {"output", {"snapshot_interval", "snapshots"}},
-        {"materials[]", {"name", "eos", "gamma"}},
+        {"materials[]", {"name", "eos", "gamma", "library", "parameters"}},
+        {"materials[].parameters", {"*"}},  // keys depend on the eos: checked in readMaterials
         {"bodies[]",
          {"name", "material", "shape", "min", "max", "center", "radius", "inner_radius",
           "outer_radius", "point", "normal", "lattice", "spacing", "density", "pressure",
@@ -57,7 +59,7 @@ const KeyList* allowedKeys(std::string_view schemaPath) {
 
 bool contains(const KeyList& keys, std::string_view k) {
   for (std::string_view a : keys)
-    if (a == k) return true;
+    if (a == k || a == "*") return true;
   return false;
 }
 
@@ -555,9 +557,43 @@ void readMaterials(const TableReader& root, Scene& scene) {
     m.line = lineOf(*list[i]);
     m.name = r.requireString("name");
     checkUniqueName(r, names, m.name);
-    m.eos = r.optEnum<std::string>("eos", {{"ideal_gas", "ideal_gas"}}).value_or("ideal_gas");
-    m.gamma = r.optQuantity("gamma", Dimension::None).value_or(m.gamma);
-    r.check(m.gamma > 1.0, "gamma", "must exceed 1 (got " + formatQuantity(m.gamma, {}) + ")");
+    EnumNames<std::string> eosNames;
+    for (const EosKind& k : eosKinds()) eosNames.push_back({k.name, std::string(k.name)});
+    m.eos = r.optEnum<std::string>("eos", eosNames).value_or("ideal_gas");
+    const EosKind& kind = *findEosKind(m.eos);
+    if (r.has("gamma")) {
+      r.check(m.eos == "ideal_gas", "gamma", "applies to eos = \"ideal_gas\" only");
+      m.gamma = *r.optQuantity("gamma", Dimension::None);
+      r.check(m.gamma > 1.0, "gamma", "must exceed 1 (got " + formatQuantity(m.gamma, {}) + ")");
+    }
+    if (const std::optional<std::string> library = r.optString("library")) {
+      std::string known;
+      bool found = false;
+      for (const std::string& n : kind.libraryNames) {
+        known += (known.empty() ? "" : ", ") + n;
+        found = found || n == *library;
+      }
+      r.check(found, "library",
+              "no " + m.eos + " library entry '" + *library + "'" +
+                  (known.empty() ? std::string(" (this eos has no library)") : "; known: " + known));
+      m.library = *library;
+    }
+    if (const toml::table* params = r.optTable("parameters")) {
+      const TableReader pr(root.context(), *params, r.key("parameters"), "materials[].parameters");
+      for (auto&& [k, node] : *params) {
+        const EosParameter* found = nullptr;
+        for (const EosParameter& p : kind.parameters)
+          if (p.key == k.str()) found = &p;
+        if (!found) {
+          std::string known;
+          for (const EosParameter& p : kind.parameters)
+            known += (known.empty() ? "" : ", ") + std::string(p.key);
+          pr.fail(k.str(), "not a parameter of eos '" + m.eos + "'; its parameters: " + known);
+        }
+        m.parameters.emplace_back(std::string(k.str()),
+                                  pr.quantityOf(node, pr.key(k.str()), found->dimension));
+      }
+    }
     scene.materials.push_back(std::move(m));
   }
 }

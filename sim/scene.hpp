@@ -5,6 +5,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sim/geometry.hpp"
@@ -59,9 +60,11 @@ struct TimeOptions {
 
 struct MaterialSpec {
   std::string name;
-  std::string eos;            // "ideal_gas" for now
-  double gamma = 1.4;         // ideal gas adiabatic index
-  int line = 0;               // source line in the scene file, for later messages
+  std::string eos = "ideal_gas";  // a kind of sim/eos_catalog.hpp
+  double gamma = 1.4;             // ideal gas adiabatic index
+  std::string library;            // library entry of the eos (e.g. "granite"); empty: none
+  std::vector<std::pair<std::string, double>> parameters;  // overrides, SI
+  int line = 0;                   // source line in the scene file, for later messages
 };
 
 struct ShapeSpec {

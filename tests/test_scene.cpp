@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/materials.hpp"
 #include "sim/scene.hpp"
 
 namespace ejecta {
@@ -252,7 +253,7 @@ TEST(Scene, BadValuesNameFileLineAndKey) {
       {13, "t_end = true", 13, "time.t_end", "expected a time (s) as a number"},
       {13, "dt_max = 1", 12, "time.t_end", "required key is missing"},
       {16, "gamma = 1.0", 16, "materials[0].gamma", "must exceed 1"},
-      {16, "eos = \"tillotson\"", 16, "materials[0].eos", "unknown value 'tillotson'"},
+      {16, "eos = \"sesame\"", 16, "materials[0].eos", "unknown value 'sesame'"},
       {19, "material = \"steel\"", 19, "bodies[0].material", "no material named 'steel'"},
       {20, "shape = \"cone\"", 20, "bodies[0].shape", "unknown value 'cone'"},
       {21, "center = [0, 0, 0]", 21, "bodies[0].center", "expected 2 components [x, y], got 3"},
@@ -435,6 +436,77 @@ TEST(Scene, VerificationScenesLoad) {
     ++count;
   }
   EXPECT_EQ(count, 5);
+}
+
+}  // namespace
+}  // namespace ejecta
+
+namespace ejecta {
+namespace {
+
+// Materials with the equations of state of the catalog: library entries, parameter overrides
+// with units, and errors that name the key.
+const char* kSolidScene = R"(
+[scene]
+name = "solids"
+dimension = "2d"
+[time]
+t_end = 1e-6
+[[materials]]
+name = "rock"
+eos = "tillotson"
+library = "granite"
+[materials.parameters]
+A = "20 GPa"
+[[materials]]
+name = "charge"
+eos = "jwl"
+library = "TNT"
+[[bodies]]
+name = "block"
+material = "rock"
+shape = "box"
+min = [0, 0]
+max = [0.1, 0.1]
+spacing = 0.01
+density = "2.68 g/cm^3"
+pressure = 0
+)";
+
+TEST(SceneMaterials, LibraryEntriesAndOverridesBuildTheirEquationsOfState) {
+  const Scene s = parseScene(kSolidScene, "solids.toml");
+  ASSERT_EQ(s.materials.size(), 2u);
+  EXPECT_EQ(s.materials[0].library, "granite");
+  ASSERT_EQ(s.materials[0].parameters.size(), 1u);
+  EXPECT_DOUBLE_EQ(s.materials[0].parameters[0].second, 20e9);
+  const MaterialTable table = MaterialTable::fromScene(s);
+  // Overridden A: the cold compression curve P = A mu + B mu^2 at mu = 0.1 with granite's B.
+  const double rho0 = 2680.0, mu = 0.1;
+  EXPECT_NEAR(table[0].eos->pressure(rho0 * (1 + mu), 0.0), 20e9 * mu + 18e9 * mu * mu, 1e-3);
+  EXPECT_EQ(table[1].eos->name(), "jwl:TNT");
+}
+
+TEST(SceneMaterials, BadMaterialsNameTheKey) {
+  auto error = [](const std::string& from, const std::string& to) {
+    std::string text = kSolidScene;
+    text.replace(text.find(from), from.size(), to);
+    try {
+      const Scene s = parseScene(text, "solids.toml");
+      MaterialTable::fromScene(s);
+    } catch (const SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_NE(error("library = \"granite\"", "library = \"cheese\"").find("materials[0].library"),
+            std::string::npos);
+  EXPECT_NE(error("A = \"20 GPa\"", "A = \"20 km/s\"").find("materials[0].parameters.A"),
+            std::string::npos);
+  EXPECT_NE(error("A = \"20 GPa\"", "Q = 1").find("not a parameter of eos 'tillotson'"),
+            std::string::npos);
+  EXPECT_NE(error("library = \"granite\"\n", "").find("parameters.rho0: required"), std::string::npos);
+  EXPECT_NE(error("eos = \"jwl\"", "eos = \"jwl\"\ngamma = 1.4").find("ideal_gas"),
+            std::string::npos);
 }
 
 }  // namespace
