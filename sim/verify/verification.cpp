@@ -12,6 +12,7 @@
 #include "sim/exact/radial_euler.hpp"
 #include "sim/exact/riemann.hpp"
 #include "sim/exact/sedov.hpp"
+#include "sim/mie_gruneisen.hpp"
 #include "sim/run.hpp"
 #include "sim/bodies.hpp"
 #include "sim/materials.hpp"
@@ -39,8 +40,10 @@ struct Finished {
   double time = 0.0;
 };
 
-// Runs the scene with every body's spacing multiplied by `coarsen`.
-Finished runAt(Scene scene, double coarsen, const Options& options) {
+// Runs the scene with every body's spacing multiplied by `coarsen`; `observer` (optional) sees
+// the simulation after every step.
+Finished runAt(Scene scene, double coarsen, const Options& options,
+               std::function<void(const Simulation&)> observer = {}) {
   for (BodySpec& b : scene.bodies) b.spacing *= coarsen;
   scene.output.snapshots = false;
   const int threads = resolveThreads(options.threads);
@@ -50,6 +53,7 @@ Finished runAt(Scene scene, double coarsen, const Options& options) {
   RunOptions runOptions;
   runOptions.threads = threads;
   runOptions.progress = options.progress;
+  runOptions.observer = std::move(observer);
   const RunOutcome outcome = runSimulation(sim, runOptions);
   if (!outcome.ok)
     throw std::runtime_error("verification run '" + scene.name + "' failed: " + outcome.error);
@@ -192,6 +196,68 @@ Report sod2d(const Options& options) {
   });
 }
 
+// --- Plate impact: shock speed against the Hugoniot -------------------------------------------
+
+// Position where the velocity profile of the target first falls below `level` (the shock front),
+// interpolated linearly between the two particles that bracket it.
+double shockFront(const ParticleSet& p, double level) {
+  std::vector<std::pair<double, double>> xv;
+  for (std::size_t i = 0; i < p.numReal; ++i) xv.emplace_back(p.x[0][i], p.v[0][i]);
+  std::sort(xv.begin(), xv.end());
+  for (std::size_t k = xv.size() - 1; k > 0; --k)
+    if (xv[k - 1].second >= level && xv[k].second < level) {
+      const double f = (level - xv[k].second) / (xv[k - 1].second - xv[k].second);
+      return xv[k].first + f * (xv[k - 1].first - xv[k].first);
+    }
+  throw std::runtime_error("plate impact: no shock front found");
+}
+
+Report plateImpact(const Options& options) {
+  const std::string name = "plate_impact_al";
+  const Scene scene = problemScene(name, options);
+  Report report;
+  report.problem = name;
+  report.description = scene.description;
+  const double V = scene.bodies[0].velocity[0];
+  const double up = 0.5 * V;  // symmetric impact
+  const double tFirst = 0.6 * scene.time.tEnd;
+  double xFirst = 0.0, tAtFirst = 0.0;
+  Finished f = runAt(scene, 1.0, options, [&](const Simulation& sim) {
+    if (tAtFirst == 0.0 && sim.time() >= tFirst) {
+      tAtFirst = sim.time();
+      xFirst = shockFront(sim.particles(), 0.5 * up);
+    }
+  });
+  const double us = (shockFront(f.particles, 0.5 * up) - xFirst) / (f.time - tAtFirst);
+  // Shocked state behind the front, away from the contact and the front's smearing.
+  const ParticleSet& p = f.particles;
+  const double xContact = up * f.time, xFront = shockFront(p, 0.5 * up);
+  double vSum = 0, PSum = 0;
+  int n = 0;
+  for (std::size_t i = 0; i < p.numReal; ++i) {
+    const double x = p.x[0][i];
+    if (x > xContact + 0.25 * (xFront - xContact) && x < xContact + 0.75 * (xFront - xContact)) {
+      vSum += p.v[0][i];
+      PSum += p.P[i];
+      ++n;
+    }
+  }
+  const double upMeasured = vSum / n, pressure = PSum / n;
+  const auto& material = shockMaterial(scene.materials[0].library);
+  const double usHugoniot = material.c0 + material.s1 * upMeasured;
+  const double pHugoniot = material.rho0 * usHugoniot * upMeasured;
+  f.run.metrics = {
+      {"particle_velocity", upMeasured, "m/s"},
+      {"shock_speed", us, "m/s"},
+      {"shock_speed_hugoniot", usHugoniot, "m/s"},
+      {"shock_speed_error", (us - usHugoniot) / usHugoniot, "1"},
+      {"shock_pressure", pressure, "Pa"},
+      {"shock_pressure_error", (pressure - pHugoniot) / pHugoniot, "1"},
+  };
+  report.runs.push_back(std::move(f.run));
+  return report;
+}
+
 // --- Sedov-Taylor blast -------------------------------------------------------------------------
 
 // Geometry j of the similarity solution and distance from the blast centre.
@@ -256,6 +322,7 @@ const std::vector<Problem>& problems() {
   static const std::vector<Problem> list = {
       {"sod_1d", "Sod shock tube, 1D, t = 0.2 s, against the exact Riemann solution", 3, sod1d},
       {"sod_2d", "Sod, 2D circular (the seed's case: r = 0.4 m, t = 0.25 s), against the converged radial solution", 3, sod2d},
+      {"plate_impact_al", "Al-2024 plate impact at 2 km/s, 1D: shock speed and pressure against the Hugoniot", 1, plateImpact},
       {"sedov_2d", "Sedov-Taylor blast, 2D planar (cylindrical blast), against the similarity solution", 2,
        [](const Options& o) { return sedov("sedov_2d", o, 2); }},
       {"sedov_rz", "Sedov-Taylor blast, RZ (spherical blast), the seed's case", 2,
