@@ -37,10 +37,6 @@ const std::vector<JwlParams>& library() {
   return lib;
 }
 
-double flooredSoundSpeed(double c2, double floor) {
-  return (c2 > floor * floor) ? std::sqrt(c2) : floor;
-}
-
 void requirePositive(double value, const char* what) {
   if (!(value > 0.0) || !std::isfinite(value))
     throw std::invalid_argument(std::string("JWL: ") + what + " must be positive and finite");
@@ -100,24 +96,6 @@ Jwl::State Jwl::state(double rho, double u) const {
   // c^2 = dP/drho|_u + (P/rho^2) dP/du|_rho with dP/du = w rho.
   return {P, dPdrho + w * P / r};
 }
-
-void Jwl::evaluate(const double* rho, const double* u, double* P, double* cs,
-                   const std::size_t* indices, std::size_t n) const {
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t i = indices[k];
-    const State s = state(rho[i], u[i]);
-    P[i] = s.P;
-    cs[i] = flooredSoundSpeed(s.c2, csFloor_);
-  }
-}
-
-double Jwl::pressure(double rho, double u) const { return state(rho, u).P; }
-
-double Jwl::soundSpeed(double rho, double u) const {
-  return flooredSoundSpeed(state(rho, u).c2, csFloor_);
-}
-
-double Jwl::soundSpeedSquared(double rho, double u) const { return state(rho, u).c2; }
 
 double Jwl::specificEnergy(double rho, double P) const {
   if (!(rho > 0.0)) throw std::domain_error("JWL: density must be positive");

@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "sim/eos.hpp"
+#include "sim/state_eos.hpp"
 
 namespace ejecta {
 
@@ -42,22 +42,18 @@ struct ChapmanJouguetState {
 };
 ChapmanJouguetState chapmanJouguetState(const JwlParams& p);
 
-class Jwl final : public EquationOfState {
+class Jwl final : public StateEquationOfState<Jwl> {
  public:
   explicit Jwl(JwlParams params);
   std::string name() const override { return "jwl:" + p_.name; }
-  void evaluate(const double* rho, const double* u, double* P, double* cs,
-                const std::size_t* indices, std::size_t n) const override;
-  double pressure(double rho, double u) const override;
-  double soundSpeed(double rho, double u) const override;
   // Exact inverse, u = (P - P_A - P_B) / (w rho). Throws std::domain_error for rho <= 0.
   double specificEnergy(double rho, double P) const override;
 
-  // Analytic c^2 = dP/drho|_u + (P/rho^2) dP/du|_rho before the positivity floor (for tests).
-  double soundSpeedSquared(double rho, double u) const;
   const JwlParams& params() const { return p_; }
 
  private:
+  friend class StateEquationOfState<Jwl>;
+  double soundSpeedFloor() const { return csFloor_; }
   struct State {
     double P;
     double c2;

@@ -47,11 +47,6 @@ void requirePositive(double value, const char* what) {
     throw std::invalid_argument(std::string(what) + " must be positive and finite");
 }
 
-double flooredSoundSpeed(double c2, double floor) {
-  // NaN c2 (from NaN input) fails the comparison and falls to the floor as well.
-  return (c2 > floor * floor) ? std::sqrt(c2) : floor;
-}
-
 // The library. Each entry's `source` names the primary reference; docs/eos_shock_jwl.md tabulates
 // them with the seed's printed values and what could be checked in this repository's session.
 const std::vector<ShockMaterial>& library() {
@@ -157,24 +152,6 @@ MieGruneisen::State MieGruneisen::state(double rho, double u) const {
   return {P, dPdrho + P / (rhoEff * rhoEff) * dPdu};
 }
 
-void MieGruneisen::evaluate(const double* rho, const double* u, double* P, double* cs,
-                            const std::size_t* indices, std::size_t n) const {
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t i = indices[k];
-    const State s = state(rho[i], u[i]);
-    P[i] = s.P;
-    cs[i] = flooredSoundSpeed(s.c2, csFloor_);
-  }
-}
-
-double MieGruneisen::pressure(double rho, double u) const { return state(rho, u).P; }
-
-double MieGruneisen::soundSpeed(double rho, double u) const {
-  return flooredSoundSpeed(state(rho, u).c2, csFloor_);
-}
-
-double MieGruneisen::soundSpeedSquared(double rho, double u) const { return state(rho, u).c2; }
-
 double MieGruneisen::specificEnergy(double rho, double P) const {
   if (!(rho > 0.0)) throw std::domain_error("Mie-Grueneisen: density must be positive");
   const double mu = std::clamp(rho / m_.rho0 - 1.0, -1.0 + 1e-12, muMax_);
@@ -226,24 +203,6 @@ PolynomialEos::State PolynomialEos::state(double rho, double u) const {
   }
   return {P, dPdrho + P / (rhoEff * rhoEff) * dPdu};
 }
-
-void PolynomialEos::evaluate(const double* rho, const double* u, double* P, double* cs,
-                             const std::size_t* indices, std::size_t n) const {
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t i = indices[k];
-    const State s = state(rho[i], u[i]);
-    P[i] = s.P;
-    cs[i] = flooredSoundSpeed(s.c2, csFloor_);
-  }
-}
-
-double PolynomialEos::pressure(double rho, double u) const { return state(rho, u).P; }
-
-double PolynomialEos::soundSpeed(double rho, double u) const {
-  return flooredSoundSpeed(state(rho, u).c2, csFloor_);
-}
-
-double PolynomialEos::soundSpeedSquared(double rho, double u) const { return state(rho, u).c2; }
 
 double PolynomialEos::specificEnergy(double rho, double P) const {
   if (!(rho > 0.0)) throw std::domain_error("polynomial EOS: density must be positive");

@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "sim/eos.hpp"
+#include "sim/state_eos.hpp"
 
 namespace ejecta {
 
@@ -48,26 +48,22 @@ HugoniotState hugoniotState(const ShockMaterial& m, double up);
 //   P = rho0 C0^2 mu [1 + (1 - gamma0/2) mu - (a/2) mu^2]
 //       / [1 - (S1-1) mu - S2 mu^2/(mu+1) - S3 mu^3/(mu+1)^2]^2 + (gamma0 + a mu) rho0 u
 // Expansion (mu <= 0):  P = rho0 C0^2 mu + (gamma0 + a mu) rho0 u.
-class MieGruneisen final : public EquationOfState {
+class MieGruneisen final : public StateEquationOfState<MieGruneisen> {
  public:
   explicit MieGruneisen(ShockMaterial material);
   std::string name() const override { return "mie_gruneisen:" + m_.name; }
-  void evaluate(const double* rho, const double* u, double* P, double* cs,
-                const std::size_t* indices, std::size_t n) const override;
-  double pressure(double rho, double u) const override;
-  double soundSpeed(double rho, double u) const override;
   // Exact inverse (P is linear in u). Returns a negative u where (rho, P) lies below the u = 0
   // curve; throws std::domain_error for rho <= 0 or where dP/du vanishes.
   double specificEnergy(double rho, double P) const override;
 
-  // Analytic c^2 = dP/drho|_u + (P/rho^2) dP/du|_rho before the positivity floor (for tests).
-  double soundSpeedSquared(double rho, double u) const;
   // Compression beyond which mu is clamped: 99% of the first zero of the denominator (the fit's
   // limiting compression), or +infinity when the denominator has no zero.
   double maxCompression() const { return muMax_; }
   const ShockMaterial& material() const { return m_; }
 
  private:
+  friend class StateEquationOfState<MieGruneisen>;
+  double soundSpeedFloor() const { return csFloor_; }
   struct State {
     double P;
     double c2;
@@ -95,19 +91,16 @@ struct PolynomialEosParams {
 // T1 = A1, T2 = 0, so both laws agree to O(mu^4) in compression (docs/eos_shock_jwl.md).
 PolynomialEosParams polynomialFromShock(const ShockMaterial& m);
 
-class PolynomialEos final : public EquationOfState {
+class PolynomialEos final : public StateEquationOfState<PolynomialEos> {
  public:
   explicit PolynomialEos(PolynomialEosParams params);
   std::string name() const override { return "polynomial:" + p_.name; }
-  void evaluate(const double* rho, const double* u, double* P, double* cs,
-                const std::size_t* indices, std::size_t n) const override;
-  double pressure(double rho, double u) const override;
-  double soundSpeed(double rho, double u) const override;
   double specificEnergy(double rho, double P) const override;
-  double soundSpeedSquared(double rho, double u) const;
   const PolynomialEosParams& params() const { return p_; }
 
  private:
+  friend class StateEquationOfState<PolynomialEos>;
+  double soundSpeedFloor() const { return csFloor_; }
   struct State {
     double P;
     double c2;
