@@ -178,7 +178,6 @@ void Simulation::computeNextTimestep() {
     if (a2 > 0.0) dtForce = std::min(dtForce, sph.forceFactor * std::sqrt(h / std::sqrt(a2)));
   }
   double dt = std::min(dtCourant, dtForce);
-  limiter_ = dtCourant <= dtForce ? StepLimiter::Courant : StepLimiter::Force;
   if (scene_.time.dtMax > 0.0 && dt > scene_.time.dtMax) dt = scene_.time.dtMax;
   if (dt == std::numeric_limits<double>::max()) dt = scene_.time.dtMax > 0 ? scene_.time.dtMax
                                                                          : scene_.time.tEnd;
@@ -227,10 +226,7 @@ void Simulation::checkHealth(double dt) const {
 void Simulation::step(double limit) {
   if (step_ % kSortInterval == 0) sortForLocality();
   double dt = dtNext_;
-  if (time_ + dt > limit) {
-    dt = limit - time_;
-    limiter_ = StepLimiter::Output;
-  }
+  if (time_ + dt > limit) dt = limit - time_;
   const std::size_t n = p_.numReal;
   const SphOptions& sph = scene_.sph;
   const bool continuity = sph.density == DensityMethod::Continuity;
@@ -280,9 +276,7 @@ void Simulation::step(double limit) {
   time_ += dt;
   ++step_;
   lastDt_ = dt;
-  const StepLimiter clamped = limiter_;
   computeNextTimestep();
-  if (clamped == StepLimiter::Output) limiter_ = StepLimiter::Output;
   checkHealth(dtNext_);
 }
 

@@ -23,9 +23,6 @@ class SimulationError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Which criterion set the last time step.
-enum class StepLimiter { Courant, Force, Output };
-
 class Simulation {
  public:
   Simulation(Scene scene, ParticleSet particles, MaterialTable materials, int numThreads);
@@ -43,7 +40,6 @@ class Simulation {
   long stepCount() const { return step_; }
   double dtNext() const { return dtNext_; }
   double lastDt() const { return lastDt_; }
-  StepLimiter lastLimiter() const { return limiter_; }
   const Scene& scene() const { return scene_; }
   const ParticleSet& particles() const { return p_; }
   ParticleSet& particles() { return p_; }
@@ -69,7 +65,6 @@ class Simulation {
   long step_ = 0;
   double dtNext_ = 0.0;
   double lastDt_ = 0.0;
-  StepLimiter limiter_ = StepLimiter::Courant;
   double hMin_ = 0.0;
   std::uint32_t maxNeighbours_ = 1u << 30;
   std::vector<std::vector<std::size_t>> materialMembers_;
