@@ -5,7 +5,9 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
+#include "sim/tensor.hpp"
 #include "sim/units.hpp"
 
 namespace ejecta {
@@ -251,10 +253,26 @@ bool insideShape(const ShapeSpec& shape, const std::array<double, 3>& x, int dim
 
 ParticleSet buildParticles(const Scene& scene, const MaterialTable& materials) {
   ParticleSet p;
-  for (std::size_t b = 0; b < scene.bodies.size(); ++b) fillBody(scene, materials, b, p);
+  std::vector<std::size_t> firstOfBody;
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    firstOfBody.push_back(p.size());
+    fillBody(scene, materials, b, p);
+  }
+  firstOfBody.push_back(p.size());
   for (std::size_t k = 0; k < scene.deposits.size(); ++k) applyDeposit(scene, k, p);
   for (std::size_t i = 0; i < p.size(); ++i) p.id[i] = static_cast<std::int64_t>(i);
   p.numReal = p.size();
+  // Solid state exists only when a material needs it ("model no more than the scene asks").
+  if (materials.anyStrength())
+    p.enableStrength(stressComponentCount(spatialDimension(scene.geometry)));
+  bool damaged = false;
+  for (const BodySpec& b : scene.bodies) damaged = damaged || b.damage > 0.0;
+  if (materials.anyFracture() || damaged) {
+    p.enableFracture();
+    for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+      for (std::size_t i = firstOfBody[b]; i < firstOfBody[b + 1]; ++i)
+        p.crack[i] = std::cbrt(scene.bodies[b].damage);
+  }
   return p;
 }
 

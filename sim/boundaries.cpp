@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/tensor.hpp"
+
 namespace ejecta {
 
 Boundaries::Boundaries(const Scene& scene) : Boundaries(scene.geometry, scene.domain) {}
@@ -110,6 +112,12 @@ void Boundaries::refreshGhosts(ParticleSet& p) const {
     p.rho[i] = p.rho[s]; p.u[i] = p.u[s]; p.h[i] = p.h[s]; p.P[i] = p.P[s]; p.cs[i] = p.cs[s];
     p.omega[i] = p.omega[s]; p.areaDensity[i] = p.areaDensity[s];
     p.divv[i] = p.divv[s]; p.curlv[i] = p.curlv[s];
+    // A mirror reverses the shear components that pair a reflected axis with one that is not.
+    for (int c = 0; c < p.stressComponents(); ++c) {
+      const bool flip = (((flips_[g] >> kSymRow[c]) ^ (flips_[g] >> kSymCol[c])) & 1u) != 0;
+      p.stress[c][i] = flip ? -p.stress[c][s] : p.stress[c][s];
+    }
+    if (p.hasFracture()) p.crack[i] = p.crack[s];
   }
 }
 

@@ -21,6 +21,10 @@ class EquationOfState {
   // Specific internal energy giving pressure P at density rho (used to set bodies up from a
   // pressure). Throws std::domain_error when no such energy exists.
   virtual double specificEnergy(double rho, double P) const = 0;
+  // Whether a negative specific internal energy is unphysical for this material (a gas: negative
+  // pressure and temperature). Solids and their cold curves may dip below u = 0 (elastic
+  // unloading, expansion), so only gases are checked.
+  virtual bool requiresPositiveEnergy() const { return false; }
 };
 
 // Ideal (gamma-law) gas: P = (gamma - 1) rho u, c^2 = gamma P / rho.
@@ -33,6 +37,7 @@ class IdealGas final : public EquationOfState {
   double pressure(double rho, double u) const override;
   double soundSpeed(double rho, double u) const override;
   double specificEnergy(double rho, double P) const override;
+  bool requiresPositiveEnergy() const override { return true; }
   double gamma() const { return gamma_; }
 
  private:

@@ -25,6 +25,11 @@ struct HydroWorkspace {
   int numThreads = 1;
   // RZ: smoothed radius rt and d rt / d r of each particle (real and ghost).
   std::vector<double> smoothedR, dSmoothedR;
+  // Shear modulus of each material [Pa]; 0 for a material without strength. Empty when no
+  // material has strength (the hydro-only pair loops).
+  std::vector<double> shearModulus;
+  // Artificial stress epsilon in effect (0 = off).
+  double artificialStress = 0.0;
   // Number of neighbours in each real particle's gather list (diagnostics).
   std::vector<std::uint32_t> neighbourCount;
 };

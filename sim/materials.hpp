@@ -1,18 +1,27 @@
 #pragma once
 // MaterialTable: per-material models, indexed by the particles' material id.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "sim/eos.hpp"
+#include "sim/fracture.hpp"
+#include "sim/strength.hpp"
+#include "sim/thermal.hpp"
 
 namespace ejecta {
 
 struct Scene;
 
+// One material: its equation of state, thermal model, and optional strength and fracture.
+// A material without strength is a fluid (no deviatoric stress, no tension limit).
 struct Material {
   std::string name;
   std::shared_ptr<const EquationOfState> eos;
+  ThermalModel thermal;
+  std::optional<StrengthModel> strength;
+  FractureModel fracture;  // kind None: never fails
 };
 
 class MaterialTable {
@@ -24,6 +33,8 @@ class MaterialTable {
   std::size_t size() const { return materials_.size(); }
   const Material& operator[](std::size_t i) const { return materials_[i]; }
   void add(Material m) { materials_.push_back(std::move(m)); }
+  bool anyStrength() const;
+  bool anyFracture() const;
 
  private:
   std::vector<Material> materials_;

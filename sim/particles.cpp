@@ -19,7 +19,10 @@ void forEachArray(ParticleSet& p, F&& f) {
   for (int d = 0; d < 3; ++d) { f(p.x[d]); f(p.v[d]); f(p.a[d]); }
   f(p.mass); f(p.rho); f(p.u); f(p.h); f(p.material); f(p.id);
   f(p.P); f(p.cs); f(p.du_dt); f(p.drho_dt); f(p.dh_dt);
-  f(p.omega); f(p.divv); f(p.curlv); f(p.areaDensity);
+  f(p.omega); f(p.divv); f(p.curlv); f(p.areaDensity); f(p.temperature);
+  for (int c = 0; c < p.stressComponents(); ++c) { f(p.stress[c]); f(p.dstress_dt[c]); }
+  if (p.stressComponents() > 0) { f(p.plasticStrain); f(p.totalStrain); f(p.strainRate); }
+  if (p.hasFracture()) { f(p.crack); f(p.dcrack_dt); }
 }
 
 }  // namespace
@@ -28,6 +31,24 @@ void ParticleSet::resize(std::size_t n) {
   const std::size_t old = size();
   forEachArray(*this, [n](auto& arr) { arr.resize(n); });
   for (std::size_t i = old; i < n; ++i) omega[i] = 1.0;
+}
+
+void ParticleSet::enableStrength(int components) {
+  stressComponents_ = components;
+  const std::size_t n = size();
+  for (int c = 0; c < components; ++c) {
+    stress[c].assign(n, 0.0);
+    dstress_dt[c].assign(n, 0.0);
+  }
+  plasticStrain.assign(n, 0.0);
+  totalStrain.assign(n, 0.0);
+  strainRate.assign(n, 0.0);
+}
+
+void ParticleSet::enableFracture() {
+  fracture_ = true;
+  crack.assign(size(), 0.0);
+  dcrack_dt.assign(size(), 0.0);
 }
 
 void ParticleSet::append(const std::array<double, 3>& pos, const std::array<double, 3>& vel,

@@ -39,11 +39,36 @@ struct ParticleSet {
   std::vector<double> curlv;    // |curl v| estimate [1/s]
   std::vector<double> areaDensity;  // RZ only: eta = 2 pi r rho [kg/m^2], the 2D summation
 
+  // --- Thermal state (derived from u by each material's thermal model) ---
+  std::vector<double> temperature;  // [K]
+
+  // --- Solid mechanics: allocated only when a material has strength (enableStrength) ---
+  // Deviatoric stress [Pa], components in sim/tensor.hpp order (xx, yy, zz, xy, xz, yz); the
+  // first stressComponents() are used (4 in 1D, 2D and RZ, where zz is the hoop stress; 6 in 3D).
+  std::array<std::vector<double>, 6> stress;
+  std::array<std::vector<double>, 6> dstress_dt;  // [Pa/s]
+  std::vector<double> plasticStrain;  // equivalent plastic strain
+  std::vector<double> totalStrain;    // equivalent total strain, integral of strainRate
+  std::vector<double> strainRate;     // equivalent strain rate sqrt(2/3 e':e') [1/s]
+
+  // --- Fracture: allocated only when a material can fracture (enableFracture) ---
+  // Crack fraction s = D^(1/3) (Benz & Asphaug 1994: the crack length over the particle size),
+  // integrated in time; the damage is D = s^3. 1 = fully damaged: no tension, no shear.
+  std::vector<double> crack;
+  std::vector<double> dcrack_dt;      // [1/s]
+
   std::size_t numReal = 0;
   // For ghost k (index numReal + k): the real particle it images.
   std::vector<std::size_t> ghostSource;
 
   std::size_t size() const { return mass.size(); }
+  int stressComponents() const { return stressComponents_; }
+  bool hasFracture() const { return fracture_; }
+  double damage(std::size_t i) const { return fracture_ ? crack[i] * crack[i] * crack[i] : 0.0; }
+  // Allocate (zeroed) the solid-mechanics arrays for `components` stress components (4 or 6).
+  void enableStrength(int components);
+  // Allocate (zeroed) the fracture arrays.
+  void enableFracture();
   std::size_t numGhosts() const { return size() - numReal; }
 
   // Resize every array to n particles (new entries zeroed; omega set to 1).
@@ -56,6 +81,10 @@ struct ParticleSet {
   // Reorder real particles by the permutation `order` (new[i] = old[order[i]]). Ghosts are
   // dropped first.
   void permute(const std::vector<std::size_t>& order);
+
+ private:
+  int stressComponents_ = 0;
+  bool fracture_ = false;
 };
 
 }  // namespace ejecta

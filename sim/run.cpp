@@ -307,7 +307,15 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
 
   const int threads = resolveThreads(options.threads);
   MaterialTable materials = MaterialTable::fromScene(scene);
+  // Weibull flaws are drawn from the particles as built at t = 0: rebuild them for the draw.
+  const bool needsFlaws = [&] {
+    for (std::size_t m = 0; m < materials.size(); ++m)
+      if (materials[m].fracture.kind == FractureKind::GradyKipp) return true;
+    return false;
+  }();
+  const ParticleSet initial = needsFlaws ? buildParticles(scene, materials) : ParticleSet{};
   Simulation sim(scene, std::move(particles), std::move(materials), threads);
+  if (needsFlaws) sim.distributeFlaws(initial);
   sim.resume(info.time, info.step, info.dtNext);
   info.snapshotIndex += 1;
   return drive(sim, options, outputs, info, info.wallSeconds, true, false);

@@ -34,17 +34,28 @@ const std::map<std::string_view, KeyList>& schemaTables() {
         {"domain.z", axis},
         {"sph",
          {"kernel", "density", "smoothing_length", "eta", "relaxation", "courant", "force_factor",
-          "h_min_factor", "viscosity", "conductivity"}},
+          "h_min_factor", "viscosity", "conductivity", "form", "artificial_stress"}},
         {"sph.viscosity", {"alpha", "beta", "epsilon", "balsara"}},
         {"sph.conductivity", {"alpha"}},
+        {"sph.artificial_stress", {"epsilon", "n"}},
         {"time", {"t_end", "dt_max", "dt_min", "max_steps"}},
         {"output", {"snapshot_interval", "snapshots"}},
-        {"materials[]", {"name", "eos", "gamma", "library", "parameters"}},
+        {"materials[]",
+         {"name", "eos", "gamma", "library", "parameters", "thermal", "strength", "fracture"}},
         {"materials[].parameters", {"*"}},  // keys depend on the eos: checked in readMaterials
+        {"materials[].thermal",
+         {"library", "specific_heat", "mean_atomic_mass", "molar_mass", "initial_temperature",
+          "melt_temperature"}},
+        {"materials[].strength",
+         {"model", "library", "shear_modulus", "yield_stress", "A", "B", "n", "C", "m",
+          "reference_strain_rate", "room_temperature"}},
+        {"materials[].fracture",
+         {"model", "weibull_k", "weibull_m", "tensile_strength", "erosion_strain",
+          "crack_speed_factor", "seed"}},
         {"bodies[]",
          {"name", "material", "shape", "min", "max", "center", "radius", "inner_radius",
           "outer_radius", "point", "normal", "lattice", "spacing", "density", "pressure",
-          "internal_energy", "velocity"}},
+          "internal_energy", "velocity", "damage"}},
         {"energy_deposits[]", {"name", "energy", "center", "radius", "profile", "width"}},
     };
   }();
@@ -510,6 +521,18 @@ void readSph(const TableReader& root, SphOptions& sph) {
     sph.conductivity = c.optQuantity("alpha", one).value_or(sph.conductivity);
     c.check(sph.conductivity >= 0.0, "alpha", nonNegativeMessage(sph.conductivity, one));
   }
+  sph.form = r.optEnum<MomentumForm>("form", {{"lagrangian", MomentumForm::Lagrangian},
+                                              {"interface", MomentumForm::Interface}})
+                 .value_or(sph.form);
+  if (const toml::table* at = r.optTable("artificial_stress")) {
+    const TableReader a(root.context(), *at, "sph.artificial_stress", "sph.artificial_stress");
+    sph.artificialStress = a.optQuantity("epsilon", one).value_or(sph.artificialStress);
+    a.check(sph.artificialStress >= 0.0, "epsilon",
+            nonNegativeMessage(sph.artificialStress, one) + " (0 switches it off)");
+    sph.artificialStressExponent = a.optQuantity("n", one).value_or(sph.artificialStressExponent);
+    a.check(sph.artificialStressExponent > 0.0, "n",
+            positiveMessage(sph.artificialStressExponent, one));
+  }
 }
 
 void readTime(const TableReader& root, TimeOptions& time) {
@@ -544,6 +567,76 @@ int lineOf(const toml::node& n) { return static_cast<int>(n.source().begin.line)
 void checkUniqueName(const TableReader& r, std::set<std::string>& seen, const std::string& name) {
   r.check(!name.empty(), "name", "must not be empty");
   r.check(seen.insert(name).second, "name", "'" + name + "' is already used by an earlier entry");
+}
+
+// Keys of a material's model tables and what each must measure; string keys are handled apart.
+struct ModelKey {
+  std::string_view key;
+  Dimension dimension;
+};
+const Dimension kPerVolume{0, -3, 0, 0};
+const Dimension kPerTime{0, 0, -1, 0};
+const Dimension kSpecificHeat{0, 2, -2, -1};
+
+void readModelTable(const TableReader& material, std::string_view name,
+                    const std::vector<ModelKey>& keys, const std::vector<std::string_view>& models,
+                    ModelSpec& out) {
+  const toml::table* t = material.optTable(name);
+  if (!t) return;
+  const TableReader r(material.context(), *t, material.key(name),
+                      "materials[]." + std::string(name));
+  out.present = true;
+  out.line = lineOf(*t);
+  if (!models.empty()) {
+    EnumNames<std::string> names;
+    for (std::string_view m : models) names.push_back({m, std::string(m)});
+    const std::optional<std::string> model = r.optEnum<std::string>("model", names);
+    if (!model) r.fail("model", "required key is missing; one of " + enumList(names));
+    out.model = *model;
+  }
+  out.library = r.optString("library").value_or("");
+  for (const ModelKey& k : keys) {
+    if (k.key == "seed") {
+      if (const std::optional<long> seed = r.optInteger("seed")) {
+        r.check(*seed >= 0, "seed", "must not be negative");
+        out.values.emplace_back("seed", static_cast<double>(*seed));
+      }
+      continue;
+    }
+    if (const std::optional<double> v = r.optQuantity(k.key, k.dimension)) {
+      r.check(*v >= 0.0, k.key, nonNegativeMessage(*v, k.dimension));
+      out.values.emplace_back(std::string(k.key), *v);
+    }
+  }
+}
+
+void readMaterialModels(const TableReader& r, MaterialSpec& m) {
+  readModelTable(r, "thermal",
+                 {{"specific_heat", kSpecificHeat},
+                  {"mean_atomic_mass", Dimension::None},
+                  {"molar_mass", Dimension::None},
+                  {"initial_temperature", Dimension::Temperature},
+                  {"melt_temperature", Dimension::Temperature}},
+                 {}, m.thermal);
+  readModelTable(r, "strength",
+                 {{"shear_modulus", Dimension::Pressure},
+                  {"yield_stress", Dimension::Pressure},
+                  {"A", Dimension::Pressure},
+                  {"B", Dimension::Pressure},
+                  {"n", Dimension::None},
+                  {"C", Dimension::None},
+                  {"m", Dimension::None},
+                  {"reference_strain_rate", kPerTime},
+                  {"room_temperature", Dimension::Temperature}},
+                 {"elastic", "von_mises", "johnson_cook"}, m.strength);
+  readModelTable(r, "fracture",
+                 {{"weibull_k", kPerVolume},
+                  {"weibull_m", Dimension::None},
+                  {"tensile_strength", Dimension::Pressure},
+                  {"erosion_strain", Dimension::None},
+                  {"crack_speed_factor", Dimension::None},
+                  {"seed", Dimension::None}},
+                 {"none", "grady_kipp", "principal_stress"}, m.fracture);
 }
 
 void readMaterials(const TableReader& root, Scene& scene) {
@@ -594,6 +687,7 @@ void readMaterials(const TableReader& root, Scene& scene) {
                                   pr.quantityOf(node, pr.key(k.str()), found->dimension));
       }
     }
+    readMaterialModels(r, m);
     scene.materials.push_back(std::move(m));
   }
 }
@@ -751,6 +845,8 @@ void readBodies(const TableReader& root, Scene& scene) {
               nonNegativeMessage(*b.internalEnergy, Dimension::SpecificEnergy));
     b.velocity = r.optVector("velocity", Dimension::Velocity, dim, vectorLayout(scene.geometry))
                      .value_or(b.velocity);
+    b.damage = r.optQuantity("damage", Dimension::None).value_or(0.0);
+    r.check(b.damage >= 0.0 && b.damage <= 1.0, "damage", "must be in [0, 1]");
     scene.bodies.push_back(std::move(b));
   }
 }

@@ -3,6 +3,7 @@
 // Everything the Simulation assembles comes from here; the engine models no more than this asks.
 #include <array>
 #include <optional>
+#include <string_view>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -26,6 +27,12 @@ enum class BoundaryKind { Open, Periodic, Wall };
 enum class LatticeKind { Cubic, Hexagonal };
 enum class ShapeKind { Box, Sphere, Shell, HalfSpace };
 enum class DepositProfile { TopHat, Gaussian };
+// How pair forces weight the two particles' stresses (docs/materials.md):
+//   Lagrangian: sigma_i/(Omega_i rho_i^2) + sigma_j/(Omega_j rho_j^2), from the grad-h Lagrangian;
+//   Interface:  (sigma_i + sigma_j)/(rho_i rho_j), exact for uniform pressure across a density
+//               jump, so material interfaces carry no spurious force (with volume-weighted
+//               continuity density).
+enum class MomentumForm { Lagrangian, Interface };
 
 struct AxisBounds {
   double min = 0.0, max = 0.0;
@@ -49,6 +56,12 @@ struct SphOptions {
   bool balsara = false;      // Balsara (1995) shear switch
   double conductivity = 0.0; // Price (2008) artificial conductivity coefficient alpha_u; 0 = off
   double hMinFactor = 1e-3;  // h below hMinFactor * initial h is a collapse (run stops)
+  MomentumForm form = MomentumForm::Lagrangian;
+  // Monaghan (2000) / Gray, Monaghan & Swift (2001) artificial stress against the tensile
+  // instability, applied to materials with strength: epsilon (0 = off; negative = the default,
+  // 0.3 when the scene has a material with strength) and the exponent n of f = W(r)/W(dp).
+  double artificialStress = -1.0;
+  double artificialStressExponent = 4.0;
 };
 
 struct TimeOptions {
@@ -58,12 +71,30 @@ struct TimeOptions {
   long maxSteps = 0;          // 0 = unlimited
 };
 
+// One optional model table of a material ([materials.thermal], [materials.strength],
+// [materials.fracture]): a model name, a library entry, and values in SI by key.
+struct ModelSpec {
+  bool present = false;
+  std::string model;
+  std::string library;
+  std::vector<std::pair<std::string, double>> values;
+  int line = 0;
+  const double* find(std::string_view key) const {
+    for (const auto& [k, v] : values)
+      if (k == key) return &v;
+    return nullptr;
+  }
+};
+
 struct MaterialSpec {
   std::string name;
   std::string eos = "ideal_gas";  // a kind of sim/eos_catalog.hpp
   double gamma = 1.4;             // ideal gas adiabatic index
   std::string library;            // library entry of the eos (e.g. "granite"); empty: none
   std::vector<std::pair<std::string, double>> parameters;  // overrides, SI
+  ModelSpec thermal;              // keys: sim/materials.cpp; docs/scenes.md
+  ModelSpec strength;
+  ModelSpec fracture;
   int line = 0;                   // source line in the scene file, for later messages
 };
 
@@ -87,6 +118,7 @@ struct BodySpec {
   std::optional<double> pressure;           // [Pa]; exactly one of pressure / internalEnergy
   std::optional<double> internalEnergy;     // [J/kg]
   std::array<double, 3> velocity{};         // [m/s]
+  double damage = 0.0;                      // initial damage D in [0, 1] (1: rubble)
   int line = 0;
 };
 

@@ -71,9 +71,25 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
       throw SimulationError("particle id " + std::to_string(p_.id[i]) +
                             " has material index " + std::to_string(p_.material[i]) +
                             " but the scene defines " + std::to_string(materials_.size()));
+  // Solid state only where a material asks for it.
+  if (materials_.anyStrength()) {
+    if (p_.stressComponents() == 0) p_.enableStrength(stressComponentCount(ws_.dim));
+    ws_.shearModulus.assign(materials_.size(), 0.0);
+    for (std::size_t m = 0; m < materials_.size(); ++m)
+      if (materials_[m].strength) ws_.shearModulus[m] = materials_[m].strength->shearModulus;
+    // Gray et al. (2001) use epsilon = 0.3 for elastic solids in tension.
+    ws_.artificialStress = scene_.sph.artificialStress < 0.0 ? 0.3 : scene_.sph.artificialStress;
+  }
+  if (materials_.anyFracture() && !p_.hasFracture()) p_.enableFracture();
+}
+
+void Simulation::distributeFlaws(const ParticleSet& initial) {
+  flaws_ = distributeMaterialFlaws(initial, materials_);
+  flawsReady_ = true;
 }
 
 void Simulation::initialise() {
+  if (!flawsReady_) distributeFlaws(p_);
   if (scene_.sph.density == DensityMethod::Continuity &&
       scene_.sph.smoothingLength == SmoothingLengthMethod::Neighbours)
     setSmoothingFromDensity(p_, ws_);
@@ -84,6 +100,7 @@ void Simulation::initialise() {
 }
 
 void Simulation::resume(double time, long step, double dtNext) {
+  if (!flawsReady_) distributeFlaws(p_);
   time_ = time;
   step_ = step;
   dtNext_ = dtNext;
@@ -118,6 +135,7 @@ void Simulation::evaluateEquationOfState() {
     materials_[m].eos->evaluate(p_.rho.data(), p_.u.data(), p_.P.data(), p_.cs.data(),
                                 members.data(), members.size());
   }
+  applyMaterialState(p_, materials_);
 }
 
 void Simulation::evaluateDerivatives() {
@@ -160,6 +178,7 @@ void Simulation::evaluateDerivatives() {
              ws_.lists.buildPairs<3>(p_, kKernelSupport); break;
   }
   runForcePass(p_, ws_);
+  computeCrackGrowth(p_, materials_, flaws_, dim);
 }
 
 void Simulation::computeNextTimestep() {
@@ -199,9 +218,12 @@ void Simulation::checkHealth(double dt) const {
     for (int d = 0; d < 3; ++d)
       finite = finite && std::isfinite(p_.x[d][i]) && std::isfinite(p_.v[d][i]) &&
                std::isfinite(p_.a[d][i]);
+    for (int c = 0; c < p_.stressComponents(); ++c)
+      finite = finite && std::isfinite(p_.stress[c][i]) && std::isfinite(p_.dstress_dt[c][i]);
     if (!finite) failAt(i, "non-finite state (NaN or infinity)");
     if (!(p_.rho[i] > 0.0)) failAt(i, "non-positive density");
-    if (p_.u[i] < 0.0) failAt(i, "negative specific internal energy");
+    if (p_.u[i] < 0.0 && materials_[static_cast<std::size_t>(p_.material[i])].eos->requiresPositiveEnergy())
+      failAt(i, "negative specific internal energy");
     if (!(p_.omega[i] > 0.0)) failAt(i, "non-positive grad-h factor omega (h no longer solvable)");
     if (p_.h[i] < hMin_)
       failAt(i, "smoothing length collapsed below sph.h_min_factor x eta x the smallest body spacing");
@@ -220,6 +242,34 @@ void Simulation::checkHealth(double dt) const {
     std::ostringstream s;
     s << "time step " << dt << " s fell below dt_min " << dtMin << " s";
     failAt(worst, s.str());
+  }
+}
+
+void Simulation::kickSolidState(double half, bool predict) {
+  const std::size_t n = p_.numReal;
+  const int nc = p_.stressComponents();
+  const bool fracture = p_.hasFracture();
+  if (predict) {
+    for (int c = 0; c < nc; ++c) stressHalf_[c].resize(n);
+    crackHalf_.resize(fracture ? n : 0);
+    strainHalf_.resize(nc > 0 ? n : 0);
+  }
+  if (nc == 0 && !fracture) return;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    // Predict: y_half = y + dt/2 y', y = y_half + dt/2 y'. Final: y = y_half + dt/2 y'_new.
+    for (int c = 0; c < nc; ++c) {
+      if (predict) stressHalf_[c][i] = p_.stress[c][i] + half * p_.dstress_dt[c][i];
+      p_.stress[c][i] = stressHalf_[c][i] + half * p_.dstress_dt[c][i];
+    }
+    if (nc > 0) {
+      if (predict) strainHalf_[i] = p_.totalStrain[i] + half * p_.strainRate[i];
+      p_.totalStrain[i] = strainHalf_[i] + half * p_.strainRate[i];
+    }
+    if (fracture) {
+      if (predict) crackHalf_[i] = std::min(p_.crack[i] + half * p_.dcrack_dt[i], 1.0);
+      p_.crack[i] = std::min(crackHalf_[i] + half * p_.dcrack_dt[i], 1.0);
+    }
   }
 }
 
@@ -257,6 +307,8 @@ void Simulation::step(double limit) {
       p_.h[i] = hHalf_[i] + half * p_.dh_dt[i];
     }
   }
+  kickSolidState(half, true);
+  applyPlasticity(p_, materials_, false);
   boundaries_.confine(p_, &vHalf_);
   if (continuity && sph.smoothingLength == SmoothingLengthMethod::Neighbours)
     setSmoothingFromDensity(p_, ws_);
@@ -271,8 +323,11 @@ void Simulation::step(double limit) {
     if (continuity) p_.rho[i] = rhoHalf_[i] + half * p_.drho_dt[i];
     if (seedH) p_.h[i] = hHalf_[i] + half * p_.dh_dt[i];
   }
+  kickSolidState(half, false);
   // Pressure and sound speed of the final state, for the snapshot and the next time step.
   evaluateEquationOfState();
+  applyPlasticity(p_, materials_, true);
+  lastFailures_ = applyFailure(p_, materials_);
   time_ += dt;
   ++step_;
   lastDt_ = dt;

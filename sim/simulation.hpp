@@ -14,6 +14,7 @@
 #include "sim/materials.hpp"
 #include "sim/particles.hpp"
 #include "sim/scene.hpp"
+#include "sim/solid_state.hpp"
 
 namespace ejecta {
 
@@ -31,6 +32,13 @@ class Simulation {
   // first step() of a new run; a restarted run instead calls resume() with stored values.
   void initialise();
   void resume(double time, long step, double dtNext);
+
+  // Grady-Kipp flaws are drawn from the particles as built at t = 0 (their volumes m/rho). A new
+  // run uses its own particles (initialise() does this); a restarted run must pass the scene's
+  // freshly built particles so it draws the same flaws.
+  void distributeFlaws(const ParticleSet& initial);
+  // Particles that failed (principal stress or erosion) in the last step.
+  std::size_t lastFailures() const { return lastFailures_; }
 
   // Advances one step of min(next time step, limit - time). Throws SimulationError on a bad
   // state (the particles then hold the offending state, for a last snapshot).
@@ -50,6 +58,8 @@ class Simulation {
  private:
   void evaluateDerivatives();
   void evaluateEquationOfState();
+  // Kick (and predict) the solid state: deviatoric stress, crack fraction, total strain.
+  void kickSolidState(double half, bool predict);
   void computeNextTimestep();
   void checkHealth(double dt) const;
   // Throws SimulationError naming the step, time, `reason` and particle i's state.
@@ -71,6 +81,11 @@ class Simulation {
   // Leapfrog half-step state.
   Vec3Array vHalf_;
   std::vector<double> uHalf_, rhoHalf_, hHalf_;
+  std::array<std::vector<double>, 6> stressHalf_;
+  std::vector<double> crackHalf_, strainHalf_;
+  FlawSet flaws_;
+  bool flawsReady_ = false;
+  std::size_t lastFailures_ = 0;
 };
 
 }  // namespace ejecta

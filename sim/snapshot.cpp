@@ -151,8 +151,8 @@ struct DatasetSpec {
 // row-major) and tags it with `units` and `description`.
 template <typename T>
 void writeDataset(hid_t group, const DatasetSpec& spec, std::size_t n, bool vector3,
-                  const T* data) {
-  const hsize_t dims[2] = {static_cast<hsize_t>(n), 3};
+                  const T* data, hsize_t columns = 3) {
+  const hsize_t dims[2] = {static_cast<hsize_t>(n), columns};
   const Hid space = checked(H5Screate_simple(vector3 ? 2 : 1, dims, nullptr), H5Sclose,
                             "cannot create dataspace");
   const std::string label = std::string("dataset '") + spec.name + "'";
@@ -193,6 +193,18 @@ void writeVectorField(hid_t group, const DatasetSpec& spec, const Vec3Array& val
   writeDataset(group, spec, n, true, rows.data());
 }
 
+// The first `columns` stress components as an (n, columns) dataset.
+void writeStressField(hid_t group, const DatasetSpec& spec,
+                      const std::array<std::vector<double>, 6>& values, std::size_t n,
+                      int columns) {
+  std::vector<double> rows(static_cast<std::size_t>(columns) * n);
+  for (int c = 0; c < columns; ++c) {
+    requireSize(values[c], n, spec.name);
+    for (std::size_t i = 0; i < n; ++i) rows[columns * i + c] = values[c][i];
+  }
+  writeDataset(group, spec, n, true, rows.data(), static_cast<hsize_t>(columns));
+}
+
 Hid createGroup(hid_t file, const char* name) {
   return checked(H5Gcreate2(file, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
                  std::string("cannot create group '") + name + "'");
@@ -222,7 +234,24 @@ void writeParticles(hid_t file, const ParticleSet& p, Geometry geometry) {
                    p.mass, n);
   writeScalarField(g, {"material", "1", "index into the run's material table"}, p.material, n);
   writeScalarField(g, {"id", "1", "stable particle identity"}, p.id, n);
-  writeScalarField(g, {"sound_speed", "m/s", "sound speed from the equation of state"}, p.cs, n);
+  writeScalarField(g, {"sound_speed", "m/s",
+                       "signal speed: the equation of state's sound speed; for materials with "
+                       "strength the longitudinal speed sqrt(c^2 + 4G/(3 rho))"}, p.cs, n);
+  writeScalarField(g, {"temperature", "K", "temperature T0 + u / c_v of the material"},
+                   p.temperature, n);
+  if (p.stressComponents() > 0) {
+    writeStressField(g, {"stress", "Pa",
+                         p.stressComponents() == 6
+                             ? "deviatoric stress: xx, yy, zz, xy, xz, yz"
+                             : "deviatoric stress: xx, yy, zz, xy (RZ: rr, zz, theta-theta, rz)"},
+                     p.stress, n, p.stressComponents());
+    writeScalarField(g, {"plastic_strain", "1", "equivalent plastic strain"}, p.plasticStrain, n);
+  }
+  if (p.hasFracture()) {
+    std::vector<double> damage(n);
+    for (std::size_t i = 0; i < n; ++i) damage[i] = p.damage(i);
+    writeScalarField(g, {"damage", "1", "damage D in [0, 1] (1: no tension, no shear)"}, damage, n);
+  }
 }
 
 void writeStringDataset(hid_t group, const char* name, const std::string& text,
@@ -249,6 +278,16 @@ void writeRestart(hid_t file, const ParticleSet& p, const SnapshotInfo& info) {
   writeScalarField(g, {"drho_dt", "kg/m^3/s", "rate of change of density (continuity)"},
                    p.drho_dt, n);
   writeScalarField(g, {"dh_dt", "m/s", "rate of change of smoothing length"}, p.dh_dt, n);
+  if (p.stressComponents() > 0) {
+    writeStressField(g, {"dstress_dt", "Pa/s", "rate of the deviatoric stress"}, p.dstress_dt, n,
+                     p.stressComponents());
+    writeScalarField(g, {"total_strain", "1", "equivalent total strain"}, p.totalStrain, n);
+    writeScalarField(g, {"strain_rate", "1/s", "equivalent strain rate"}, p.strainRate, n);
+  }
+  if (p.hasFracture()) {
+    writeScalarField(g, {"crack", "1", "crack fraction D^(1/3)"}, p.crack, n);
+    writeScalarField(g, {"dcrack_dt", "1/s", "rate of the crack fraction"}, p.dcrack_dt, n);
+  }
   writeStringDataset(g, "scene_source", info.sceneSource, "text of the scene file of the run");
   writeScalarAttribute(g, "dt_next", info.dtNext);
   writeScalarAttribute<std::int64_t>(g, "snapshot_index", info.snapshotIndex);
@@ -325,17 +364,18 @@ void requireClass(hid_t type, const std::string& label) {
 
 // Reads dataset `path` that must have shape (n) or, for vector3, (n, 3).
 template <typename T>
-std::vector<T> readDataset(hid_t file, const std::string& path, std::size_t n, bool vector3) {
+std::vector<T> readDataset(hid_t file, const std::string& path, std::size_t n, bool vector3,
+                           hsize_t columns = 3) {
   const Hid dset = openDataset(file, path);
   const std::vector<hsize_t> dims = datasetShape(dset.get(), path);
   const std::vector<hsize_t> expected =
-      vector3 ? std::vector<hsize_t>{n, 3} : std::vector<hsize_t>{n};
+      vector3 ? std::vector<hsize_t>{n, columns} : std::vector<hsize_t>{n};
   if (dims != expected)
     throw std::runtime_error("dataset '" + path + "' has shape " + shapeText(dims) +
                              ", expected " + shapeText(expected));
   const Hid type = checked(H5Dget_type(dset.get()), H5Tclose, "cannot get type of '" + path + "'");
   requireClass<T>(type.get(), "dataset '" + path + "'");
-  std::vector<T> values(vector3 ? 3 * n : n);
+  std::vector<T> values(vector3 ? columns * n : n);
   if (!values.empty())
     check(H5Dread(dset.get(), H5Type<T>::memory(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
           "cannot read dataset '" + path + "'");
@@ -487,6 +527,32 @@ ParticleSet readParticles(hid_t file) {
   p.du_dt = readDataset<double>(file, "/restart/du_dt", n, false);
   p.drho_dt = readDataset<double>(file, "/restart/drho_dt", n, false);
   p.dh_dt = readDataset<double>(file, "/restart/dh_dt", n, false);
+  if (linkExists(file, "/particles/temperature"))
+    p.temperature = readDataset<double>(file, "/particles/temperature", n, false);
+  if (linkExists(file, "/particles/stress")) {
+    const Hid dset = openDataset(file, "/particles/stress");
+    const std::vector<hsize_t> dims = datasetShape(dset.get(), "/particles/stress");
+    const int columns = dims.size() == 2 ? static_cast<int>(dims[1]) : 0;
+    if (columns != 4 && columns != 6)
+      throw std::runtime_error("dataset '/particles/stress' has shape " + shapeText(dims) +
+                               ", expected (N, 4) or (N, 6)");
+    p.enableStrength(columns);
+    const std::vector<double> stress = readDataset<double>(file, "/particles/stress", n, true, columns);
+    const std::vector<double> rate = readDataset<double>(file, "/restart/dstress_dt", n, true, columns);
+    for (int c = 0; c < columns; ++c)
+      for (std::size_t i = 0; i < n; ++i) {
+        p.stress[c][i] = stress[columns * i + c];
+        p.dstress_dt[c][i] = rate[columns * i + c];
+      }
+    p.plasticStrain = readDataset<double>(file, "/particles/plastic_strain", n, false);
+    p.totalStrain = readDataset<double>(file, "/restart/total_strain", n, false);
+    p.strainRate = readDataset<double>(file, "/restart/strain_rate", n, false);
+  }
+  if (linkExists(file, "/restart/crack")) {
+    p.enableFracture();
+    p.crack = readDataset<double>(file, "/restart/crack", n, false);
+    p.dcrack_dt = readDataset<double>(file, "/restart/dcrack_dt", n, false);
+  }
   return p;
 }
 

@@ -16,6 +16,7 @@
 #include "sim/run.hpp"
 #include "sim/bodies.hpp"
 #include "sim/materials.hpp"
+#include "sim/verify/runner.hpp"
 
 namespace ejecta::verify {
 
@@ -25,7 +26,7 @@ double ResolutionRun::metric(const std::string& name) const {
   throw std::out_of_range("no metric '" + name + "'");
 }
 
-namespace {
+namespace detail {
 
 Scene problemScene(const std::string& name, const Options& options) {
   const std::string key = "verification/" + name;
@@ -34,16 +35,10 @@ Scene problemScene(const std::string& name, const Options& options) {
   return parseScene(std::string(text), "scenes/" + key + ".toml", options.overrides);
 }
 
-struct Finished {
-  ParticleSet particles;
-  ResolutionRun run;
-  double time = 0.0;
-};
-
 // Runs the scene with every body's spacing multiplied by `coarsen`; `observer` (optional) sees
 // the simulation after every step.
 Finished runAt(Scene scene, double coarsen, const Options& options,
-               std::function<void(const Simulation&)> observer = {}) {
+               std::function<void(const Simulation&)> observer) {
   for (BodySpec& b : scene.bodies) b.spacing *= coarsen;
   scene.output.snapshots = false;
   const int threads = resolveThreads(options.threads);
@@ -121,6 +116,12 @@ void writeProfile(const Options& options, const std::string& name, const Resolut
   }
   writeFileAtomically(std::filesystem::path(options.outDir) / file, out.str());
 }
+
+}  // namespace detail
+
+namespace {
+
+using namespace detail;
 
 // Volume-weighted L1 errors of density, velocity and pressure against a reference state.
 struct L1Accumulator {
@@ -330,7 +331,12 @@ const std::vector<Problem>& problems() {
       {"sedov_3d", "Sedov-Taylor blast, 3D (spherical blast)", 1,
        [](const Options& o) { return sedov("sedov_3d", o, 1); }},
   };
-  return list;
+  static const std::vector<Problem> all = [] {
+    std::vector<Problem> out = list;
+    for (const Problem& p : detail::strengthProblems()) out.push_back(p);
+    return out;
+  }();
+  return all;
 }
 
 Report runProblem(const std::string& name, const Options& options) {

@@ -1,0 +1,47 @@
+#pragma once
+// Per-particle updates of the solid state that sit outside the pair loops: temperature, the
+// damage reduction of tension, plasticity (radial return), Grady-Kipp crack growth rates, and
+// failure by principal stress or erosion. Each loops over the real particles once.
+#include <cstdint>
+#include <vector>
+
+#include "sim/materials.hpp"
+#include "sim/particles.hpp"
+#include "sim/weibull_flaws.hpp"
+
+namespace ejecta {
+
+// Flaws of every particle that can fracture by Grady-Kipp, found by particle id.
+struct FlawSet {
+  std::vector<FlawTable> tables;          // one per material (empty for other materials)
+  std::vector<std::int32_t> tableOfId;    // by particle id: material whose table holds it, or -1
+  std::vector<std::uint32_t> rowOfId;     // by particle id: row in that table
+  bool empty() const { return tables.empty(); }
+};
+
+// Distributes the flaws of each Grady-Kipp material over its particles in `initial` (the
+// particles as built at t = 0, so a restarted run draws the same flaws): volume m / rho each,
+// seeded by the material's fracture seed and index.
+FlawSet distributeMaterialFlaws(const ParticleSet& initial, const MaterialTable& materials);
+
+// After the equation of state: temperature from u; for damaged particles tension scaled by
+// (1 - D); for solids the sound speed raised to the longitudinal speed sqrt(c^2 + 4G/(3 rho)),
+// the signal speed the time step and the viscosity must respect.
+void applyMaterialState(ParticleSet& p, const MaterialTable& materials);
+
+// Radial return of the deviatoric stress to each material's flow stress; with
+// `accumulatePlasticStrain` the equivalent plastic strain grows by the returned increment.
+void applyPlasticity(ParticleSet& p, const MaterialTable& materials, bool accumulatePlasticStrain);
+
+// Grady-Kipp rates d(crack)/dt of the real particles (0 for other materials).
+void computeCrackGrowth(ParticleSet& p, const MaterialTable& materials, const FlawSet& flaws,
+                        int dimension);
+
+// Principal-stress failure and erosion: sets the damage of failing particles to 1 (and their
+// tension to 0). Returns the number of particles that failed now.
+std::size_t applyFailure(ParticleSet& p, const MaterialTable& materials);
+
+// The full effective stress tensor of particle i: -P I + (1 - D) S (tension positive).
+SymTensor effectiveStress(const ParticleSet& p, std::size_t i);
+
+}  // namespace ejecta

@@ -1,0 +1,37 @@
+#pragma once
+// Internal to the verification problems: running a verification scene and collecting its
+// particles and run statistics. The problems themselves are grouped by subject in
+// verification.cpp (gas dynamics) and strength.cpp (solids).
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "sim/particles.hpp"
+#include "sim/scene.hpp"
+#include "sim/simulation.hpp"
+#include "sim/verify/verification.hpp"
+
+namespace ejecta::verify::detail {
+
+struct Finished {
+  ParticleSet particles;
+  ResolutionRun run;
+  double time = 0.0;
+};
+
+// The embedded scene scenes/verification/NAME.toml with the options' --set overrides.
+Scene problemScene(const std::string& name, const Options& options);
+
+// Runs the scene with every body's spacing multiplied by `coarsen`; `observer` (optional) sees
+// the simulation after every step.
+Finished runAt(Scene scene, double coarsen, const Options& options,
+               std::function<void(const Simulation&)> observer = {});
+
+// Writes rows as NAME_nPARTICLES.csv under options.outDir (nothing if it is empty).
+void writeProfile(const Options& options, const std::string& name, const ResolutionRun& run,
+                  const std::string& header, const std::vector<std::vector<double>>& rows);
+
+// The solid-mechanics problems (strength.cpp).
+std::vector<Problem> strengthProblems();
+
+}  // namespace ejecta::verify::detail
