@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <span>
 
 #include "sim/fracture.hpp"
 #include "sim/tensor.hpp"

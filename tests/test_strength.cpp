@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <numbers>
 
 #include "sim/bodies.hpp"
 #include "sim/fracture.hpp"

@@ -31,6 +31,14 @@ Finished runAt(Scene scene, double coarsen, const Options& options,
 void writeProfile(const Options& options, const std::string& name, const ResolutionRun& run,
                   const std::string& header, const std::vector<std::vector<double>>& rows);
 
+// The rightmost position where the x-velocity profile first falls below `level`: the front of a
+// 1D wave running in +x into material at rest. Throws std::runtime_error if there is none.
+double waveFront(const ParticleSet& p, double level);
+
+// A report of one run at the scene's own resolution.
+Report singleRunReport(const std::string& name, const Scene& scene, std::string reference,
+                       ResolutionRun run);
+
 // The solid-mechanics problems (strength.cpp).
 std::vector<Problem> strengthProblems();
 

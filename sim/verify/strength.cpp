@@ -37,20 +37,6 @@ ElasticConstants elasticConstants(const Scene& scene) {
   return e;
 }
 
-// Rightmost position where the target's velocity profile first falls below `level` (the front of
-// the wave running into the target), interpolated between the bracketing particles.
-double waveFront(const ParticleSet& p, double level) {
-  std::vector<std::pair<double, double>> xv;
-  for (std::size_t i = 0; i < p.numReal; ++i) xv.emplace_back(p.x[0][i], p.v[0][i]);
-  std::sort(xv.begin(), xv.end());
-  for (std::size_t k = xv.size() - 1; k > 0; --k)
-    if (xv[k - 1].second >= level && xv[k].second < level) {
-      const double f = (level - xv[k].second) / (xv[k - 1].second - xv[k].second);
-      return xv[k].first + f * (xv[k - 1].first - xv[k].first);
-    }
-  throw std::runtime_error("no wave front found at velocity level " + std::to_string(level));
-}
-
 // Mean of sigma_xx = -P + S_xx and of v over the target particles in [x0, x1].
 void meanState(const ParticleSet& p, double x0, double x1, double& sigma, double& v) {
   double s = 0.0, vs = 0.0;
@@ -93,12 +79,9 @@ Report elasticWave(const Options& options) {
       {"stress", sigma, "Pa"},
       {"stress_error", (sigma - sigmaExact) / sigmaExact, "1"},
   };
-  Report report;
-  report.problem = name;
-  report.description = scene.description;
-  report.reference = "c_L = sqrt((K + 4G/3)/rho), sigma = -rho c_L u_p (linear elasticity)";
-  report.runs.push_back(std::move(f.run));
-  return report;
+  return singleRunReport(name, scene,
+                         "c_L = sqrt((K + 4G/3)/rho), sigma = -rho c_L u_p (linear elasticity)",
+                         std::move(f.run));
 }
 
 Report elasticPlastic(const Options& options) {
@@ -152,12 +135,9 @@ Report elasticPlastic(const Options& options) {
       {"hel_error", (-sigmaHel - hel) / hel, "1"},
       {"deviatoric_stress_error", (sxx + 2.0 * Y / 3.0) / (2.0 * Y / 3.0), "1"},
   };
-  Report report;
-  report.problem = name;
-  report.description = scene.description;
-  report.reference = "sigma_HEL = (K + 4G/3) Y/(2G); precursor at c_L; S_xx = -2Y/3 behind";
-  report.runs.push_back(std::move(f.run));
-  return report;
+  return singleRunReport(name, scene,
+                         "sigma_HEL = (K + 4G/3) Y/(2G); precursor at c_L; S_xx = -2Y/3 behind",
+                         std::move(f.run));
 }
 
 // Number of particles in the largest group of a body connected by gaps below `link`.
@@ -210,12 +190,9 @@ Report rubberRings(const Options& options) {
       {"intact_fraction_left", intactLeft, "1"},
       {"intact_fraction_right", intactRight, "1"},
   };
-  Report report;
-  report.problem = name;
-  report.description = scene.description;
-  report.reference = "Gray, Monaghan & Swift (2001): elastic rings bounce apart without fracture";
-  report.runs.push_back(std::move(f.run));
-  return report;
+  return singleRunReport(name, scene,
+                         "Gray, Monaghan & Swift (2001): elastic rings bounce apart without fracture",
+                         std::move(f.run));
 }
 
 Report taylorBar(const Options& options) {
@@ -241,12 +218,9 @@ Report taylorBar(const Options& options) {
       {"footprint_diameter_error", (diameter - diameterRef) / diameterRef, "1"},
       {"max_plastic_strain", epsMax, "1"},
   };
-  Report report;
-  report.problem = name;
-  report.description = scene.description;
-  report.reference = "DynELA v4 / Abaqus Taylor benchmark: L = 26.54 mm, D = 11.155 mm at 80 us";
-  report.runs.push_back(std::move(f.run));
-  return report;
+  return singleRunReport(name, scene,
+                         "DynELA v4 / Abaqus Taylor benchmark: L = 26.54 mm, D = 11.155 mm at 80 us",
+                         std::move(f.run));
 }
 
 }  // namespace

@@ -117,6 +117,30 @@ void writeProfile(const Options& options, const std::string& name, const Resolut
   writeFileAtomically(std::filesystem::path(options.outDir) / file, out.str());
 }
 
+// The rightmost position where the x-velocity profile first falls below `level` (the front of a
+// wave running in +x into material at rest), interpolated between the bracketing particles.
+double waveFront(const ParticleSet& p, double level) {
+  std::vector<std::pair<double, double>> xv;
+  for (std::size_t i = 0; i < p.numReal; ++i) xv.emplace_back(p.x[0][i], p.v[0][i]);
+  std::sort(xv.begin(), xv.end());
+  for (std::size_t k = xv.size() - 1; k > 0; --k)
+    if (xv[k - 1].second >= level && xv[k].second < level) {
+      const double f = (level - xv[k].second) / (xv[k - 1].second - xv[k].second);
+      return xv[k].first + f * (xv[k - 1].first - xv[k].first);
+    }
+  throw std::runtime_error("no wave front found at velocity level " + std::to_string(level));
+}
+
+Report singleRunReport(const std::string& name, const Scene& scene, std::string reference,
+                       ResolutionRun run) {
+  Report report;
+  report.problem = name;
+  report.description = scene.description;
+  report.reference = std::move(reference);
+  report.runs.push_back(std::move(run));
+  return report;
+}
+
 }  // namespace detail
 
 namespace {
@@ -199,26 +223,9 @@ Report sod2d(const Options& options) {
 
 // --- Plate impact: shock speed against the Hugoniot -------------------------------------------
 
-// Position where the velocity profile of the target first falls below `level` (the shock front),
-// interpolated linearly between the two particles that bracket it.
-double shockFront(const ParticleSet& p, double level) {
-  std::vector<std::pair<double, double>> xv;
-  for (std::size_t i = 0; i < p.numReal; ++i) xv.emplace_back(p.x[0][i], p.v[0][i]);
-  std::sort(xv.begin(), xv.end());
-  for (std::size_t k = xv.size() - 1; k > 0; --k)
-    if (xv[k - 1].second >= level && xv[k].second < level) {
-      const double f = (level - xv[k].second) / (xv[k - 1].second - xv[k].second);
-      return xv[k].first + f * (xv[k - 1].first - xv[k].first);
-    }
-  throw std::runtime_error("plate impact: no shock front found");
-}
-
 Report plateImpact(const Options& options) {
   const std::string name = "plate_impact_al";
   const Scene scene = problemScene(name, options);
-  Report report;
-  report.problem = name;
-  report.description = scene.description;
   const double V = scene.bodies[0].velocity[0];
   const double up = 0.5 * V;  // symmetric impact
   const double tFirst = 0.6 * scene.time.tEnd;
@@ -226,13 +233,13 @@ Report plateImpact(const Options& options) {
   Finished f = runAt(scene, 1.0, options, [&](const Simulation& sim) {
     if (tAtFirst == 0.0 && sim.time() >= tFirst) {
       tAtFirst = sim.time();
-      xFirst = shockFront(sim.particles(), 0.5 * up);
+      xFirst = waveFront(sim.particles(), 0.5 * up);
     }
   });
-  const double us = (shockFront(f.particles, 0.5 * up) - xFirst) / (f.time - tAtFirst);
+  const double us = (waveFront(f.particles, 0.5 * up) - xFirst) / (f.time - tAtFirst);
   // Shocked state behind the front, away from the contact and the front's smearing.
   const ParticleSet& p = f.particles;
-  const double xContact = up * f.time, xFront = shockFront(p, 0.5 * up);
+  const double xContact = up * f.time, xFront = waveFront(p, 0.5 * up);
   double vSum = 0, PSum = 0;
   int n = 0;
   for (std::size_t i = 0; i < p.numReal; ++i) {
@@ -255,8 +262,9 @@ Report plateImpact(const Options& options) {
       {"shock_pressure", pressure, "Pa"},
       {"shock_pressure_error", (pressure - pHugoniot) / pHugoniot, "1"},
   };
-  report.runs.push_back(std::move(f.run));
-  return report;
+  return singleRunReport(name, scene,
+                         "Al-2024 Hugoniot Us = C0 + s up (Steinberg 1996, from Marsh 1980)",
+                         std::move(f.run));
 }
 
 // --- Sedov-Taylor blast -------------------------------------------------------------------------
