@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "apps/commands.hpp"
+#include "fields/run_outputs.hpp"
 #include "sim/embedded_scenes.hpp"
 #include "sim/run.hpp"
 #include "sim/scene.hpp"
@@ -30,6 +31,25 @@ void printSummary(const RunOutcome& r, const std::string& outDir) {
               s.wallSeconds, s.threads);
   std::printf("  energy: initial %.8g J, final %.8g J, relative error %.3g\n", s.energy.initial,
               s.energy.final, s.energy.relativeError);
+  auto extra = [&](const char* key) -> const SummaryValue* {
+    const SummaryValue* found = nullptr;
+    for (const auto& [k, v] : s.extras)
+      if (k == key) found = &v;
+    return found;
+  };
+  auto number = [&](const char* key) {
+    const SummaryValue* v = extra(key);
+    return v && std::holds_alternative<double>(*v) ? std::get<double>(*v) : 0.0;
+  };
+  if (const SummaryValue* found = extra("crater_found")) {
+    if (std::get<bool>(*found))
+      std::printf("  crater: depth %.3g m, apparent diameter %.3g m, rim-to-rim %.3g m "
+                  "(profile: crater_profile.csv)\n",
+                  number("crater_depth_m"), number("crater_apparent_diameter_m"),
+                  number("crater_rim_diameter_m"));
+    else if (const SummaryValue* note = extra("crater_note"))
+      std::printf("  crater: none measured (%s)\n", std::get<std::string>(*note).c_str());
+  }
   if (!outDir.empty())
     std::printf("  outputs: %s/{summary.json, energy.csv, snapshots.xdmf, snapshots/}\n",
                 outDir.c_str());
@@ -42,6 +62,7 @@ int runCommand(const RunArgs& args) {
   RunOptions options;
   options.threads = args.threads;
   options.progress = !args.quiet && interactive();
+  options.configure = [](const Scene& scene, RunOptions& o) { fields::addFieldOutputs(o, scene); };
   if (!args.restartDir.empty()) {
     if (!args.scene.empty() || !args.overrides.empty())
       throw std::runtime_error("--restart takes the scene and overrides stored in the run; "

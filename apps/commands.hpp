@@ -27,6 +27,24 @@ struct VerifyArgs {
 };
 int verifyCommand(const VerifyArgs& args);
 
+struct FieldsArgs {
+  std::string snapshot;                // SNAPSHOT.h5
+  std::string out;                     // FILE.vdb (default fields.vdb)
+  std::string voxel;                   // "0.2 m"; empty = the scene's [fields] voxel or median h
+  std::vector<std::string> grids;      // empty = the scene's [fields] grids or the default set
+  std::string normalise;               // auto | shepard | none
+  bool noLevelSet = false;
+};
+int fieldsCommand(const FieldsArgs& args);
+
+struct CraterArgs {
+  std::string input;                   // SNAPSHOT.h5 or FILE.vdb
+  bool json = false;
+  std::string profile;                 // write the radial profile CSV here
+  std::string resolution;              // "0.1 m"; empty = half the median h / the voxel size
+};
+int craterCommand(const CraterArgs& args);
+
 // True when stderr is a terminal and CI is not set: show progress lines.
 bool interactive();
 

@@ -31,6 +31,23 @@ int main(int argc, char** argv) {
   verifyCmd->add_option("--resolutions", verify.resolutions, "Number of resolutions for the convergence study");
   verifyCmd->add_option("--out,-o", verify.outDir, "Write profiles (CSV) here");
 
+  ejecta::app::FieldsArgs fieldsArgs;
+  CLI::App* fieldsCmd = app.add_subcommand("fields", "Grid a snapshot's particles into sparse OpenVDB grids");
+  fieldsCmd->add_option("snapshot", fieldsArgs.snapshot, "Snapshot (.h5)")->required();
+  fieldsCmd->add_option("--out,-o", fieldsArgs.out, "Output file (default fields.vdb)");
+  fieldsCmd->add_option("--voxel", fieldsArgs.voxel, "Voxel size, e.g. \"0.2 m\" (default: median smoothing length)");
+  fieldsCmd->add_option("--grids", fieldsArgs.grids, "Grids: density,temperature,pressure,damage,fractions,...")
+      ->delimiter(',');
+  fieldsCmd->add_option("--normalise", fieldsArgs.normalise, "auto | shepard | none");
+  fieldsCmd->add_flag("--no-level-set", fieldsArgs.noLevelSet, "Do not add the surface level set");
+
+  ejecta::app::CraterArgs craterArgs;
+  CLI::App* craterCmd = app.add_subcommand("crater", "Measure the crater in a snapshot or a grid file");
+  craterCmd->add_option("input", craterArgs.input, "Snapshot (.h5) or grid file (.vdb)")->required();
+  craterCmd->add_flag("--json", craterArgs.json, "Print the measures and profile as JSON");
+  craterCmd->add_option("--profile", craterArgs.profile, "Write the radial profile as CSV");
+  craterCmd->add_option("--resolution", craterArgs.resolution, "Measuring resolution, e.g. \"0.1 m\"");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -39,6 +56,8 @@ int main(int argc, char** argv) {
   try {
     if (*runCmd) return ejecta::app::runCommand(run);
     if (*verifyCmd) return ejecta::app::verifyCommand(verify);
+    if (*fieldsCmd) return ejecta::app::fieldsCommand(fieldsArgs);
+    if (*craterCmd) return ejecta::app::craterCommand(craterArgs);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ejecta: error: %s\n", e.what());
     return 1;

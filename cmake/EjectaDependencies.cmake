@@ -1,5 +1,10 @@
 # Third-party packages, all from Debian 12 (see cmake/install-deps.sh and docs/dependencies.md).
 # Each library target links only what it uses; this file just finds them.
+# TBB before OpenVDB: OpenVDB's own FindTBB.cmake defines only TBB::tbb, and TBB's config
+# fails later if that one wins (docs/dependencies.md).
+find_package(TBB 2021 CONFIG REQUIRED)
+list(APPEND CMAKE_MODULE_PATH /usr/lib/x86_64-linux-gnu/cmake/OpenVDB)
+find_package(OpenVDB 10 REQUIRED)
 find_package(OpenMP REQUIRED)
 find_package(HDF5 REQUIRED COMPONENTS C)
 find_package(tomlplusplus 3 CONFIG REQUIRED)

@@ -170,12 +170,13 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
   ProgressLine progress(options.progress);
   RunOutcome outcome;
   bool lastWritten = atSnapshot;
-  auto snapshot = [&] {
+  auto snapshot = [&](bool final) {
     info.time = sim.time();
     info.step = sim.stepCount();
     info.dtNext = sim.dtNext();
     info.wallSeconds = wall();
     if (snapshots) outputs.writeSnapshot(sim, info);
+    if (options.onOutput) options.onOutput(sim, info, final);
     ++info.snapshotIndex;
   };
   try {
@@ -187,7 +188,7 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
       info.initialMomentum = t0.momentum;
       outputs.logEnergy(sim, info.initialEnergy);
       if (options.observer) options.observer(sim);
-      snapshot();
+      snapshot(false);
     }
     while (!reached(sim.time(), tEnd)) {
       if (scene.time.maxSteps > 0 && sim.stepCount() >= scene.time.maxSteps)
@@ -201,19 +202,19 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
       progress.update(sim, wall());
       if (reached(sim.time(), info.nextOutputTime) && !reached(sim.time(), tEnd)) {
         info.nextOutputTime = interval > 0 ? info.nextOutputTime + interval : tEnd;
-        snapshot();
+        snapshot(false);
         lastWritten = true;
       }
     }
     if (!lastWritten) {
       info.nextOutputTime = tEnd;
-      snapshot();
+      snapshot(true);
     }
   } catch (const SimulationError& e) {
     outcome.ok = false;
     outcome.error = e.what();
     try {
-      snapshot();  // the offending state, for diagnosis
+      snapshot(true);  // the offending state, for diagnosis
     } catch (const std::exception& w) {
       outcome.error += std::string(" (and the last snapshot could not be written: ") + w.what() + ")";
     }
@@ -243,6 +244,7 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
                       s.wallSeconds > 0 ? static_cast<double>(s.particles) *
                                               static_cast<double>(s.steps) / s.wallSeconds
                                         : 0.0});
+  if (options.onFinish) options.onFinish(sim, s);
   if (outputs.enabled())
     writeSummaryJson((fs::path(options.outDir) / "summary.json").string(), s);
   return outcome;
@@ -261,12 +263,23 @@ RunOutcome runSimulation(Simulation& sim, const RunOptions& options) {
   return drive(sim, options, outputs, info, 0.0, false, true);
 }
 
-RunOutcome runScene(const Scene& scene, const RunOptions& options) {
+RunOutcome runScene(const Scene& scene, const RunOptions& baseOptions) {
+  RunOptions options = baseOptions;
+  if (options.configure) options.configure(scene, options);
   const int threads = resolveThreads(options.threads);
   MaterialTable materials = MaterialTable::fromScene(scene);
   ParticleSet particles = buildParticles(scene, materials);
   Simulation sim(scene, std::move(particles), std::move(materials), threads);
   return runSimulation(sim, options);
+}
+
+Scene storedScene(const SnapshotInfo& info, const std::string& snapshotPath) {
+  if (info.sceneSource.empty())
+    throw SceneError(snapshotPath + ": the snapshot holds no scene (/restart/scene_source is empty)");
+  std::string source;
+  std::vector<std::string> overrides;
+  splitStoredScene(info.sceneSource, source, overrides);
+  return parseScene(source, snapshotPath + " (stored scene)", overrides);
 }
 
 RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) {
@@ -291,6 +304,7 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
   splitStoredScene(info.sceneSource, options.sceneSource, options.overrides);
   const std::vector<std::string>& overrides = options.overrides;
   Scene scene = parseScene(options.sceneSource, files.back().string() + " (stored scene)", overrides);
+  if (options.configure) options.configure(scene, options);
 
   RunOutputs outputs(options);
   std::vector<XdmfEntry> series;

@@ -9,6 +9,7 @@
 
 #include "sim/scene.hpp"
 #include "sim/simulation.hpp"
+#include "sim/snapshot.hpp"
 #include "sim/summary.hpp"
 
 namespace ejecta {
@@ -21,6 +22,14 @@ struct RunOptions {
   std::vector<std::string> overrides;  // --set strings, stored for restarts
   // Called after every step (and once after initialisation) with the simulation.
   std::function<void(const Simulation&)> observer;
+  // Called at every output time, after the snapshot (if any) is written, with its info; `final`
+  // is true for the run's last output (also after a failure). For in-situ outputs (fields/).
+  std::function<void(const Simulation&, const SnapshotInfo&, bool final)> onOutput;
+  // Called once at the end, before summary.json is written, to add to the summary.
+  std::function<void(const Simulation&, RunSummary&)> onFinish;
+  // Called by runScene and restartRun once the scene is known (a restart reads it from the
+  // snapshot), to add hooks for it: the command line adds the fields/ outputs here.
+  std::function<void(const Scene&, RunOptions&)> configure;
 };
 
 struct RunOutcome {
@@ -35,6 +44,10 @@ RunOutcome runScene(const Scene& scene, const RunOptions& options);
 RunOutcome runSimulation(Simulation& sim, const RunOptions& options);
 // Resumes the run in `runDir` from its last snapshot; continues writing there.
 RunOutcome restartRun(const std::string& runDir, const RunOptions& options);
+
+// The scene a snapshot was written from (its stored text and --set overrides). Throws
+// SceneError naming the snapshot when it holds no scene.
+Scene storedScene(const SnapshotInfo& info, const std::string& snapshotPath);
 
 // Resolves the thread count of RunOptions (0 -> OpenMP default).
 int resolveThreads(int requested);

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "sim/eos_catalog.hpp"
+#include "sim/particle_fields.hpp"
 #include "sim/units.hpp"
 
 namespace ejecta {
@@ -26,7 +27,8 @@ const std::map<std::string_view, KeyList>& schemaTables() {
     const KeyList axis{"min", "max", "boundary", "lower", "upper"};
     return std::map<std::string_view, KeyList>{
         {"",
-         {"scene", "domain", "sph", "time", "output", "materials", "bodies", "energy_deposits"}},
+         {"scene", "domain", "sph", "time", "output", "fields", "crater", "materials", "bodies",
+          "energy_deposits"}},
         {"scene", {"name", "description", "dimension"}},
         {"domain", {"x", "y", "z"}},
         {"domain.x", axis},
@@ -40,6 +42,10 @@ const std::map<std::string_view, KeyList>& schemaTables() {
         {"sph.artificial_stress", {"epsilon", "n"}},
         {"time", {"t_end", "dt_max", "dt_min", "max_steps"}},
         {"output", {"snapshot_interval", "snapshots"}},
+        {"fields",
+         {"grids", "voxel", "normalise", "every", "level_set", "extrude", "region_min",
+          "region_max"}},
+        {"crater", {"enabled", "materials", "resolution"}},
         {"materials[]",
          {"name", "eos", "gamma", "library", "parameters", "thermal", "strength", "fracture"}},
         {"materials[].parameters", {"*"}},  // keys depend on the eos: checked in readMaterials
@@ -231,6 +237,21 @@ class TableReader {
     for (int i = 0; i < n; ++i)
       out[i] = quantityOf(*arr->get(static_cast<std::size_t>(i)),
                           key(k) + "[" + std::to_string(i) + "]", dim);
+    return out;
+  }
+
+  std::optional<std::vector<std::string>> optStringArray(std::string_view k) const {
+    const toml::node* node = find(k);
+    if (!node) return std::nullopt;
+    const toml::array* arr = node->as_array();
+    if (!arr) fail(k, "expected an array of strings, got " + typeName(*node));
+    std::vector<std::string> out;
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      const toml::node* e = arr->get(i);
+      if (!e->is_string())
+        ctx_.fail(e, key(k) + "[" + std::to_string(i) + "]", "expected a string, got " + typeName(*e));
+      out.push_back(*e->value<std::string>());
+    }
     return out;
   }
 
@@ -559,6 +580,77 @@ void readOutput(const TableReader& root, OutputOptions& out) {
   r.check(out.snapshotInterval >= 0.0, "snapshot_interval",
           nonNegativeMessage(out.snapshotInterval, Dimension::Time) + "; 0 = first and last only");
   out.snapshots = r.optBool("snapshots").value_or(out.snapshots);
+}
+
+// A grid name of [fields]: a particle field, "fractions", or "fraction_<material>".
+void checkGridName(const TableReader& r, const Scene& scene, const std::string& name) {
+  if (findParticleScalarField(name) || name == "fractions") return;
+  const std::string prefix = "fraction_";
+  if (name.rfind(prefix, 0) == 0) {
+    for (const MaterialSpec& m : scene.materials)
+      if (m.name == name.substr(prefix.size())) return;
+    r.fail("grids", "'" + name + "': no material named '" + name.substr(prefix.size()) + "'");
+  }
+  r.fail("grids", "unknown grid '" + name + "'; allowed: " + particleScalarFieldList() +
+                      ", 'fractions', 'fraction_<material>'");
+}
+
+// [fields] and [crater] come after the materials: their names are checked against them.
+void readFields(const TableReader& root, Scene& scene) {
+  const toml::table* t = root.optTable("fields");
+  if (!t) return;
+  const TableReader r(root.context(), *t, "fields", "fields");
+  FieldsOutputOptions& f = scene.fields;
+  f.enabled = true;
+  if (auto grids = r.optStringArray("grids")) {
+    r.check(!grids->empty(), "grids", "must name at least one grid");
+    for (const std::string& g : *grids) checkGridName(r, scene, g);
+    f.grids = *grids;
+  }
+  const Dimension m = Dimension::Length;
+  f.voxel = r.optQuantity("voxel", m).value_or(0.0);
+  r.check(f.voxel >= 0.0, "voxel", nonNegativeMessage(f.voxel, m) + "; 0 = the median h");
+  static const EnumNames<FieldNormalisation> kNorm{{"auto", FieldNormalisation::Auto},
+                                                   {"shepard", FieldNormalisation::Shepard},
+                                                   {"none", FieldNormalisation::None}};
+  f.normalise = r.optEnum("normalise", kNorm).value_or(f.normalise);
+  f.every = static_cast<int>(r.optInteger("every").value_or(1));
+  r.check(f.every >= 1, "every", "must be at least 1 (every Nth snapshot)");
+  f.levelSet = r.optBool("level_set").value_or(true);
+  f.extrude = r.optQuantity("extrude", m).value_or(0.0);
+  r.check(f.extrude >= 0.0, "extrude", nonNegativeMessage(f.extrude, m));
+  r.check(f.extrude == 0.0 || scene.geometry == Geometry::Planar, "extrude",
+          "only 2D planar runs are extruded");
+  const auto lo = r.optVector("region_min", m, 3, "[x, y, z] (RZ grids: revolved about y)");
+  const auto hi = r.optVector("region_max", m, 3, "[x, y, z] (RZ grids: revolved about y)");
+  r.check(lo.has_value() == hi.has_value(), lo ? "region_max" : "region_min",
+          "give both region_min and region_max");
+  if (lo) {
+    f.clip = true;
+    f.regionMin = *lo;
+    f.regionMax = *hi;
+    for (int d = 0; d < 3; ++d)
+      r.check(f.regionMax[d] > f.regionMin[d], "region_max", "must exceed region_min in every component");
+  }
+}
+
+void readCrater(const TableReader& root, Scene& scene) {
+  const toml::table* t = root.optTable("crater");
+  if (!t) return;
+  const TableReader r(root.context(), *t, "crater", "crater");
+  CraterAnalysisOptions& c = scene.crater;
+  c.enabled = r.optBool("enabled").value_or(true);
+  if (auto names = r.optStringArray("materials")) {
+    for (const std::string& n : *names) {
+      bool known = false;
+      for (const MaterialSpec& m : scene.materials) known = known || m.name == n;
+      r.check(known, "materials", "no material named '" + n + "'");
+    }
+    c.materials = *names;
+  }
+  c.resolution = r.optQuantity("resolution", Dimension::Length).value_or(0.0);
+  r.check(c.resolution >= 0.0, "resolution",
+          nonNegativeMessage(c.resolution, Dimension::Length) + "; 0 = half the median h");
 }
 
 int lineOf(const toml::node& n) { return static_cast<int>(n.source().begin.line); }
@@ -899,6 +991,8 @@ Scene validate(const toml::table& doc, const std::string& sourceName) {
   readMaterials(root, scene);
   readBodies(root, scene);
   readDeposits(root, scene);
+  readFields(root, scene);
+  readCrater(root, scene);
   return scene;
 }
 

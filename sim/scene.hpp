@@ -138,6 +138,34 @@ struct OutputOptions {
   bool snapshots = true;
 };
 
+// How grids are normalised (docs/fields.md): Shepard divides by the kernel-weighted volume sum, so
+// intensive fields (temperature, pressure) keep their value up to a free surface; None keeps the
+// plain SPH sum, which falls to zero across a free surface (density, material fractions).
+enum class FieldNormalisation { Auto, Shepard, None };
+
+// [fields]: sparse VDB grids written during the run (fields/, docs/fields.md).
+struct FieldsOutputOptions {
+  bool enabled = false;                 // the scene has a [fields] table
+  // Particle fields by name (sim/particle_fields.hpp), "fractions" (one per material) or
+  // "fraction_<material>".
+  std::vector<std::string> grids{"density", "temperature", "pressure", "damage", "fractions"};
+  double voxel = 0.0;                   // [m]; 0 = the median smoothing length
+  FieldNormalisation normalise = FieldNormalisation::Auto;
+  int every = 1;                        // write with every Nth snapshot (and the last)
+  bool levelSet = true;                 // a surface level set of all material
+  double extrude = 0.0;                 // 2D planar: slab depth [m]; 0 = one voxel
+  bool clip = false;                    // only voxels inside [regionMin, regionMax]
+  std::array<double, 3> regionMin{}, regionMax{};  // grid coordinates (RZ: revolved about y)
+};
+
+// [crater]: the crater measured at the end of an impact run (fields/crater.hpp).
+struct CraterAnalysisOptions {
+  // Measured when the scene is an impact: a moving body strikes bodies at rest (2D, RZ, 3D).
+  bool enabled = true;
+  std::vector<std::string> materials;   // target materials; empty: those of the bodies at rest
+  double resolution = 0.0;              // [m]; 0 = half the median smoothing length
+};
+
 struct Scene {
   std::string name;
   std::string description;
@@ -150,6 +178,8 @@ struct Scene {
   std::vector<BodySpec> bodies;             // earlier bodies win where shapes overlap
   std::vector<EnergyDepositSpec> deposits;
   OutputOptions output;
+  FieldsOutputOptions fields;
+  CraterAnalysisOptions crater;
 };
 
 // Reads and validates a scene file. `overrides` are "dotted.key=value" strings applied before

@@ -1,0 +1,170 @@
+#include "fields/crater_setup.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ejecta::fields {
+
+namespace {
+
+double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double norm(const Point& a) { return std::sqrt(dot(a, a)); }
+Point add(const Point& a, const Point& b, double s) {
+  return {a[0] + s * b[0], a[1] + s * b[1], a[2] + s * b[2]};
+}
+
+Point bodyCentre(const ShapeSpec& s) {
+  switch (s.kind) {
+    case ShapeKind::Box:
+      return {(s.min[0] + s.max[0]) / 2, (s.min[1] + s.max[1]) / 2, (s.min[2] + s.max[2]) / 2};
+    case ShapeKind::Sphere:
+    case ShapeKind::Shell: return s.center;
+    case ShapeKind::HalfSpace: return s.point;
+  }
+  return {};
+}
+
+double outerRadius(const ShapeSpec& s) { return s.radius; }
+
+// First hit of the ray c + t d (t > 0, |d| = 1) on an axis-aligned box's faces, as a plane.
+std::optional<ReferenceSurface> boxFaceHit(const ShapeSpec& box, const Point& c, const Point& d,
+                                           int dims) {
+  double best = INFINITY;
+  std::optional<ReferenceSurface> face;
+  for (int axis = 0; axis < dims; ++axis) {
+    if (d[axis] == 0.0) continue;
+    const double plane = d[axis] > 0 ? box.min[axis] : box.max[axis];
+    const double t = (plane - c[axis]) / d[axis];
+    if (t <= 0.0 || t >= best) continue;
+    const Point p = add(c, d, t);
+    bool inside = true;
+    for (int o = 0; o < dims; ++o)
+      if (o != axis && (p[o] < box.min[o] || p[o] > box.max[o])) inside = false;
+    if (!inside) continue;
+    best = t;
+    ReferenceSurface s;
+    s.kind = ReferenceSurface::Kind::Plane;
+    s.point = p;
+    s.normal = {0, 0, 0};
+    s.normal[axis] = d[axis] > 0 ? -1.0 : 1.0;
+    face = s;
+  }
+  return face;
+}
+
+}  // namespace
+
+std::optional<CraterSetup> craterSetupFromScene(const Scene& scene) {
+  if (!scene.crater.enabled || scene.geometry == Geometry::Line) return std::nullopt;
+  const int dims = spatialDimension(scene.geometry);
+  const BodySpec* impactor = nullptr;
+  for (const BodySpec& b : scene.bodies)
+    if (norm(b.velocity) > 0.0 && (!impactor || norm(b.velocity) > norm(impactor->velocity)))
+      impactor = &b;
+  if (!impactor) return std::nullopt;
+
+  CraterSetup setup;
+  setup.planar = scene.geometry == Geometry::Planar;
+  auto isTarget = [&](const BodySpec& b) {
+    if (!scene.crater.materials.empty())
+      return std::find(scene.crater.materials.begin(), scene.crater.materials.end(),
+                       scene.materials[b.material].name) != scene.crater.materials.end();
+    return norm(b.velocity) == 0.0;
+  };
+  std::vector<const BodySpec*> targets;
+  for (const BodySpec& b : scene.bodies)
+    if (&b != impactor && isTarget(b)) targets.push_back(&b);
+  if (targets.empty()) return std::nullopt;
+  for (const BodySpec* b : targets)
+    if (std::find(setup.targetMaterials.begin(), setup.targetMaterials.end(), b->material) ==
+        setup.targetMaterials.end()) {
+      setup.targetMaterials.push_back(b->material);
+      setup.targetNames.push_back(scene.materials[b->material].name);
+    }
+
+  const Point c = bodyCentre(impactor->shape);
+  const double speed = norm(impactor->velocity);
+  const Point d = {impactor->velocity[0] / speed, impactor->velocity[1] / speed,
+                   impactor->velocity[2] / speed};
+  setup.alongTrack = d;
+
+  // The surface: a half-space target wins, then the largest sphere, then a box face.
+  const BodySpec* outer = nullptr;
+  for (const BodySpec* b : targets)
+    if (b->shape.kind == ShapeKind::HalfSpace) outer = b;
+  if (outer) {
+    setup.surface.kind = ReferenceSurface::Kind::Plane;
+    setup.surface.point = outer->shape.point;
+    const double n = norm(outer->shape.normal);
+    setup.surface.normal = {outer->shape.normal[0] / n, outer->shape.normal[1] / n,
+                            outer->shape.normal[2] / n};
+  } else {
+    for (const BodySpec* b : targets)
+      if ((b->shape.kind == ShapeKind::Sphere || b->shape.kind == ShapeKind::Shell) &&
+          (!outer || outerRadius(b->shape) > outerRadius(outer->shape)))
+        outer = b;
+    if (outer) {
+      setup.surface.kind = ReferenceSurface::Kind::Sphere;
+      setup.surface.center = outer->shape.center;
+      setup.surface.radius = outerRadius(outer->shape);
+    }
+  }
+  if (!outer) {
+    for (const BodySpec* b : targets)
+      if (auto face = boxFaceHit(b->shape, c, d, dims)) {
+        setup.surface = *face;
+        outer = b;
+        break;
+      }
+    if (outer) {
+      // The side faces of the box bound the search along the surface.
+      const ShapeSpec& box = outer->shape;
+      double limit = INFINITY;
+      const Point p = setup.surface.point;
+      for (int axis = 0; axis < dims; ++axis) {
+        if (setup.surface.normal[axis] != 0.0) continue;
+        limit = std::min({limit, p[axis] - box.min[axis], box.max[axis] - p[axis]});
+      }
+      if (scene.geometry == Geometry::Axisymmetric)
+        limit = box.max[0] - p[0];  // the axis is no edge
+      setup.searchLimit = std::max(limit - 3.0 * outer->spacing, outer->spacing);
+    }
+    if (!outer)
+      throw SceneError(scene.sourcePath + ": crater: the path of body '" + impactor->name +
+                       "' meets no target body's surface; give [crater] materials or disable it");
+  }
+  setup.targetDensity = outer->density;
+
+  // Where the path meets the surface (closest approach when it misses a sphere).
+  if (setup.surface.kind == ReferenceSurface::Kind::Plane) {
+    const Point& n = setup.surface.normal;
+    const double dn = dot(d, n);
+    const Point rel = {c[0] - setup.surface.point[0], c[1] - setup.surface.point[1],
+                       c[2] - setup.surface.point[2]};
+    const double t = dn != 0.0 ? -dot(rel, n) / dn : 0.0;
+    setup.impactPoint = add(c, d, t);
+  } else {
+    const Point rel = {c[0] - setup.surface.center[0], c[1] - setup.surface.center[1],
+                       c[2] - setup.surface.center[2]};
+    const double b = dot(rel, d);
+    const double disc = b * b - (dot(rel, rel) - setup.surface.radius * setup.surface.radius);
+    const double t = disc >= 0.0 ? -b - std::sqrt(disc) : -b;
+    setup.impactPoint = add(c, d, t);
+  }
+  return setup;
+}
+
+CraterOptions craterOptions(const CraterSetup& setup, double resolution) {
+  CraterOptions o;
+  o.surface = setup.surface;
+  o.impactPoint = setup.impactPoint;
+  o.alongTrack = setup.alongTrack;
+  o.planar = setup.planar;
+  o.resolution = resolution;
+  o.targetDensity = setup.targetDensity;
+  o.searchRadius = 120.0 * resolution;
+  if (setup.searchLimit > 0.0) o.searchRadius = std::min(o.searchRadius, setup.searchLimit);
+  return o;
+}
+
+}  // namespace ejecta::fields

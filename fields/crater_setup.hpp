@@ -1,0 +1,38 @@
+#pragma once
+// What a crater measurement needs to know about the run, worked out from its scene: the target's
+// original surface (the largest sphere at rest, or a half-space or box face), where the
+// impactor's path meets it, the flight direction, and which materials are target.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fields/crater.hpp"
+#include "sim/scene.hpp"
+
+namespace ejecta::fields {
+
+struct CraterSetup {
+  ReferenceSurface surface;
+  Point impactPoint{};
+  Point alongTrack{};
+  bool planar = false;
+  double targetDensity = 0.0;               // [kg/m^3], of the outermost target body
+  // How far from the impact point, along the surface, the target extends (a box's nearest side
+  // face, less a few spacings); 0: no limit (a sphere or a half-space).
+  double searchLimit = 0.0;
+  std::vector<int> targetMaterials;         // material indices
+  std::vector<std::string> targetNames;     // their names
+};
+
+// The setup for an impact scene, in grid coordinates (RZ: (r, z) -> (x, y), axis along y), or
+// nothing when the scene is not one (1D; no moving body; no body at rest; [crater] enabled =
+// false). A [crater] materials list replaces the bodies-at-rest rule. Throws SceneError when the
+// target surface cannot be worked out (e.g. only box targets that the path misses).
+std::optional<CraterSetup> craterSetupFromScene(const Scene& scene);
+
+// Options for analyseCrater from a setup at the given resolution [m]: the search reaches 120
+// resolutions from the axis (craters some tens of smoothing lengths across, rims included), or
+// the setup's searchLimit if that is nearer.
+CraterOptions craterOptions(const CraterSetup& setup, double resolution);
+
+}  // namespace ejecta::fields

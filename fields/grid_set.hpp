@@ -1,0 +1,71 @@
+#pragma once
+// The grids of one output time, built from particles: which fields, how normalised, on what
+// lattice, in 3D grid coordinates (RZ revolved, planar as a slab). fields/vdb_grids.hpp writes
+// them as OpenVDB FloatGrids. docs/fields.md.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fields/sparse_lattice.hpp"
+#include "fields/splat.hpp"
+#include "sim/geometry.hpp"
+#include "sim/particles.hpp"
+#include "sim/scene.hpp"
+
+namespace ejecta::fields {
+
+// What to grid. Mirrors the scene's [fields] table (sim/scene.hpp: FieldsOutputOptions).
+struct GridRequest {
+  std::vector<std::string> grids{"density", "temperature", "pressure", "damage", "fractions"};
+  double voxel = 0.0;            // [m]; 0 = the median smoothing length
+  FieldNormalisation normalise = FieldNormalisation::Auto;
+  double extrude = 0.0;          // planar: slab depth [m]; 0 = one voxel
+  bool clip = false;
+  std::array<double, 3> regionMin{}, regionMax{};
+
+  static GridRequest fromScene(const FieldsOutputOptions& f);
+};
+
+// What the particles are: the parts of a Scene the grids need.
+struct ParticleContext {
+  Geometry geometry = Geometry::Spatial;
+  KernelKind kernel = KernelKind::CubicSpline;
+  std::vector<std::string> materialNames;  // by material index
+
+  static ParticleContext fromScene(const Scene& scene);
+};
+
+struct GridSpec {
+  std::string name;     // "density", "fraction_granite", ...
+  std::string units;    // SI ("1": dimensionless)
+  int channel = 0;      // lattice channel of the plain SPH sum
+  bool shepard = false; // value = channel / channel 0
+};
+
+struct GridSet {
+  SparseLattice lattice;          // 3D; channel 0 = the filled fraction sum_j V_j W
+  std::vector<GridSpec> grids;    // in request order
+  Geometry source = Geometry::Spatial;
+  std::size_t particles = 0;
+  // The value of grid g at block b, voxel v (0 where nothing is).
+  float value(std::size_t g, std::size_t b, int v) const;
+};
+
+// The median smoothing length of the real particles [m].
+double medianSmoothingLength(const ParticleSet& p);
+
+// Expands "fractions" and validates names; throws std::invalid_argument naming an unknown grid.
+std::vector<std::string> expandGridNames(const std::vector<std::string>& grids,
+                                         const std::vector<std::string>& materialNames);
+
+// Splats the particles in the run's own geometry (2D for planar and RZ, 3D for 3D), with
+// channel 0 = sum V W and channel c+1 = values[c]. RZ sums include the mirror across the axis.
+SparseLattice splatParticles(const ParticleSet& p, const ParticleContext& ctx,
+                             const std::vector<std::vector<double>>& values, double voxel,
+                             const std::optional<VoxelBox>& clip = std::nullopt);
+
+// The grids of `request` for the particles. Throws std::invalid_argument for a 1D run, an
+// unknown grid name, or a particle set without particles.
+GridSet buildGridSet(const ParticleSet& p, const ParticleContext& ctx, const GridRequest& request);
+
+}  // namespace ejecta::fields

@@ -1,0 +1,31 @@
+#include "fields/measure_crater.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ejecta::fields {
+
+CraterMetrics measureCrater(const ParticleSet& p, const ParticleContext& ctx,
+                            const CraterSetup& setup, double resolution) {
+  const double res = resolution > 0.0 ? resolution : 0.5 * medianSmoothingLength(p);
+  std::vector<double> target(p.numReal, 0.0);
+  for (std::size_t i = 0; i < p.numReal; ++i)
+    if (std::find(setup.targetMaterials.begin(), setup.targetMaterials.end(), p.material[i]) !=
+        setup.targetMaterials.end())
+      target[i] = 1.0;
+  const SparseLattice lattice = splatParticles(p, ctx, {target}, res);
+  // Channel 1: sum over target particles of V_j W, the target's filled fraction.
+  FractionField field;
+  switch (ctx.geometry) {
+    case Geometry::Axisymmetric:
+      field = [&lattice](const Point& x) {
+        return lattice.sample(1, {std::hypot(x[0], x[2]), x[1], 0.0});
+      };
+      break;
+    default:
+      field = [&lattice](const Point& x) { return lattice.sample(1, x); };
+  }
+  return analyseCrater(field, craterOptions(setup, res));
+}
+
+}  // namespace ejecta::fields

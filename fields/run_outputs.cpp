@@ -1,0 +1,94 @@
+#include "fields/run_outputs.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "fields/crater_setup.hpp"
+#include "fields/grid_set.hpp"
+#include "fields/measure_crater.hpp"
+#include "fields/vdb_grids.hpp"
+#include "sim/atomic_file.hpp"
+
+namespace fs = std::filesystem;
+
+namespace ejecta::fields {
+
+std::string fieldFileName(long snapshotIndex) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "fields_%04ld.vdb", snapshotIndex);
+  return buf;
+}
+
+namespace {
+
+void addCraterToSummary(const CraterMetrics& m, bool planar, RunSummary& s) {
+  s.extras.push_back({"crater_found", m.found});
+  if (!m.note.empty()) s.extras.push_back({"crater_note", m.note});
+  if (!m.found) return;
+  s.extras.push_back({"crater_depth_m", m.depth});
+  s.extras.push_back({"crater_apparent_diameter_m", m.apparentDiameter});
+  s.extras.push_back({"crater_rim_diameter_m", m.rimDiameter});
+  s.extras.push_back({"crater_rim_height_m", m.rimHeight});
+  if (planar) {
+    // A planar run's crater is a trench of unit depth: an area and a mass per metre.
+    s.extras.push_back({"crater_area_m2", m.volume});
+    s.extras.push_back({"crater_excavated_mass_kg_per_m", m.excavatedMass});
+  } else {
+    s.extras.push_back({"crater_volume_m3", m.volume});
+    s.extras.push_back({"crater_excavated_mass_kg", m.excavatedMass});
+    s.extras.push_back({"crater_elongation", m.elongation});
+  }
+}
+
+}  // namespace
+
+void addFieldOutputs(RunOptions& options, const Scene& scene) {
+  if (options.outDir.empty() || scene.geometry == Geometry::Line) return;
+  const std::string outDir = options.outDir;
+  const ParticleContext ctx = ParticleContext::fromScene(scene);
+  // Worked out now, so a scene whose target cannot be found fails before the run, not after.
+  const std::optional<CraterSetup> crater = craterSetupFromScene(scene);
+
+  if (scene.fields.enabled) {
+    // Names checked now for the same reason.
+    expandGridNames(scene.fields.grids, ctx.materialNames);
+    const GridRequest request = GridRequest::fromScene(scene.fields);
+    const int every = scene.fields.every;
+    const bool levelSet = scene.fields.levelSet;
+    const std::string sceneName = scene.name;
+    auto previous = options.onOutput;
+    options.onOutput = [=](const Simulation& sim, const SnapshotInfo& info, bool final) {
+      if (previous) previous(sim, info, final);
+      if (!final && info.snapshotIndex % every != 0) return;
+      const GridSet set = buildGridSet(sim.particles(), ctx, request);
+      GridFileMeta meta;
+      meta.scene = sceneName;
+      meta.time = info.time;
+      meta.step = info.step;
+      meta.levelSet = levelSet;
+      meta.crater = crater;
+      writeGridFile((fs::path(outDir) / "fields" / fieldFileName(info.snapshotIndex)).string(), set, meta);
+    };
+  }
+
+  if (crater) {
+    const double resolution = scene.crater.resolution;
+    auto previous = options.onFinish;
+    options.onFinish = [=](const Simulation& sim, RunSummary& summary) {
+      if (previous) previous(sim, summary);
+      try {
+        const CraterMetrics m = measureCrater(sim.particles(), ctx, *crater, resolution);
+        addCraterToSummary(m, crater->planar, summary);
+        writeFileAtomically(fs::path(outDir) / "crater_profile.csv", craterProfileCsv(m));
+      } catch (const std::exception& e) {
+        // The run's own results stand; say why the crater is missing.
+        summary.extras.push_back({"crater_found", false});
+        summary.extras.push_back({"crater_note", std::string("crater measurement failed: ") + e.what()});
+      }
+    };
+  }
+}
+
+}  // namespace ejecta::fields

@@ -1,0 +1,16 @@
+#pragma once
+// The fields/ outputs of `ejecta run`: VDB grids written in-situ at the scene's [fields] cadence
+// (RUN_DIR/fields/fields_NNNN.vdb, NNNN the snapshot index), and, for impact scenes, the crater
+// measured at the end (summary.json "crater_*" entries and RUN_DIR/crater_profile.csv).
+#include "sim/run.hpp"
+#include "sim/scene.hpp"
+
+namespace ejecta::fields {
+
+// Adds the hooks to `options` (keeping any hooks already there).
+void addFieldOutputs(RunOptions& options, const Scene& scene);
+
+// RUN_DIR/fields/fields_NNNN.vdb
+std::string fieldFileName(long snapshotIndex);
+
+}  // namespace ejecta::fields

@@ -1,0 +1,241 @@
+// Crater measurement from particles (fields/measure_crater, crater_setup; issue 5): targets of
+// particles with a known hole, measured through the whole chain (splat, lattice, ray marching),
+// the crater setup worked out from impact scenes, and an impact run that writes grids and puts
+// the crater into summary.json.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <unistd.h>
+
+#include "fields/crater_setup.hpp"
+#include "fields/measure_crater.hpp"
+#include "fields/run_outputs.hpp"
+#include "fields/vdb_grids.hpp"
+#include "sim/run.hpp"
+#include "sim/scene.hpp"
+
+namespace fs = std::filesystem;
+
+namespace ejecta::fields {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// A half-space target y <= 0 of particles at spacing dx with a hemispherical hole of radius a
+// centred at the origin. RZ: rings (r, z) with r in (0, width); 3D: |x|, |z| < width.
+ParticleSet holedHalfSpace(Geometry g, double width, double depth, double dx, double a) {
+  ParticleSet p;
+  const double rho = 2680.0;
+  const bool rz = g == Geometry::Axisymmetric;
+  const int nx = static_cast<int>(std::lround((rz ? width : 2 * width) / dx));
+  const int ny = static_cast<int>(std::lround(depth / dx));
+  const int nz = g == Geometry::Spatial ? nx : 1;
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j)
+      for (int k = 0; k < nz; ++k) {
+        const double x = (rz ? 0.0 : -width) + (i + 0.5) * dx;
+        const double y = -(j + 0.5) * dx;
+        const double z = g == Geometry::Spatial ? -width + (k + 0.5) * dx : 0.0;
+        if (x * x + y * y + z * z < a * a) continue;
+        double m = rho * std::pow(dx, spatialDimension(g));
+        if (rz) m *= 2 * kPi * x;
+        p.append({x, y, z}, {}, m, rho, 0.0, 1.2 * dx, 0);
+      }
+  p.numReal = p.size();
+  return p;
+}
+
+CraterSetup planeSetup(bool planar, double searchLimit) {
+  CraterSetup s;
+  s.searchLimit = searchLimit;
+  s.surface.kind = ReferenceSurface::Kind::Plane;
+  s.surface.point = {0, 0, 0};
+  s.surface.normal = {0, 1, 0};
+  s.impactPoint = {0, 0, 0};
+  s.planar = planar;
+  s.targetDensity = 2680.0;
+  s.targetMaterials = {0};
+  s.targetNames = {"granite"};
+  return s;
+}
+
+ParticleContext context(Geometry g) {
+  ParticleContext c;
+  c.geometry = g;
+  c.materialNames = {"granite"};
+  return c;
+}
+
+TEST(CraterFromParticles, HemisphericalHoleRZ) {
+  const double a = 2.0, dx = 0.05;
+  const ParticleSet p = holedHalfSpace(Geometry::Axisymmetric, 6.0, 5.0, dx, a);
+  const CraterMetrics m = measureCrater(p, context(Geometry::Axisymmetric), planeSetup(false, 5.5));
+  ASSERT_TRUE(m.found) << m.note;
+  // The particles' own surface is the hole's edge give or take half a spacing (a lattice does
+  // not fit a sphere), and the measuring resolution is 0.03 m: one spacing on lengths, and on
+  // the volume twice the relative shell of half a spacing (3 * 0.025 / 2 = 3.8%): 5%.
+  EXPECT_NEAR(m.depth, a, dx);
+  EXPECT_NEAR(m.apparentDiameter, 2 * a, 2 * dx);
+  const double volume = 2.0 / 3.0 * kPi * a * a * a;
+  EXPECT_NEAR(m.volume / volume, 1.0, 0.05);
+  EXPECT_NEAR(m.excavatedMass, 2680.0 * m.volume, 1e-6 * m.excavatedMass);
+  EXPECT_NEAR(m.elongation, 1.0, 0.02);  // axisymmetric by construction
+  EXPECT_LT(std::abs(m.rimHeight), dx);  // no rim
+}
+
+TEST(CraterFromParticles, HemisphericalHole3D) {
+  const double a = 1.0, dx = 0.1;
+  const ParticleSet p = holedHalfSpace(Geometry::Spatial, 2.0, 2.0, dx, a);
+  const CraterMetrics m = measureCrater(p, context(Geometry::Spatial), planeSetup(false, 1.7));
+  ASSERT_TRUE(m.found) << m.note;
+  // As in RZ, with a coarser lattice (a = 10 spacings): one spacing on lengths, 10% on volume.
+  EXPECT_NEAR(m.depth, a, dx);
+  EXPECT_NEAR(m.apparentDiameter, 2 * a, 2 * dx);
+  EXPECT_NEAR(m.volume / (2.0 / 3.0 * kPi * a * a * a), 1.0, 0.10);
+  EXPECT_NEAR(m.elongation, 1.0, 0.1);
+}
+
+TEST(CraterFromParticles, HalfDiscHolePlanar) {
+  const double a = 1.0, dx = 0.05;
+  const ParticleSet p = holedHalfSpace(Geometry::Planar, 3.0, 2.5, dx, a);
+  const CraterMetrics m = measureCrater(p, context(Geometry::Planar), planeSetup(true, 2.7));
+  ASSERT_TRUE(m.found) << m.note;
+  EXPECT_NEAR(m.depth, a, dx);
+  EXPECT_NEAR(m.apparentDiameter, 2 * a, 2 * dx);
+  // Area per metre of depth; the shell argument of the RZ case gives 2 * 0.025 / 1 = 5%.
+  EXPECT_NEAR(m.volume / (kPi * a * a / 2), 1.0, 0.06);
+}
+
+std::string impactScene(const std::string& dimension, const std::string& extra = "") {
+  const bool planar = dimension == "2d";
+  return R"(
+[scene]
+name = "tiny_impact"
+dimension = ")" + dimension + R"("
+[sph]
+density = "continuity"
+form = "interface"
+[time]
+t_end = "60 us"
+[output]
+snapshot_interval = "30 us"
+)" + extra + R"(
+[[materials]]
+name = "granite"
+eos = "tillotson"
+library = "granite"
+[[materials]]
+name = "aluminium"
+eos = "mie_gruneisen"
+library = "Al-2024"
+[[bodies]]
+name = "impactor"
+material = "aluminium"
+shape = "sphere"
+center = [0.0, "0.12 m"]
+radius = "0.1 m"
+spacing = "0.02 m"
+density = "2785 kg/m^3"
+pressure = 0.0
+velocity = [0.0, "-3 km/s"]
+[[bodies]]
+name = "target"
+material = "granite"
+shape = "box"
+min = [)" + (planar ? std::string("\"-1 m\"") : std::string("0.0")) + R"(, "-0.6 m"]
+max = ["1 m", 0.0]
+spacing = "0.02 m"
+density = "2680 kg/m^3"
+pressure = 0.0
+)";
+}
+
+TEST(CraterSetupFromScene, ImpactScenesGiveSurfaceImpactPointAndTargets) {
+  const Scene rz = loadScene(std::string(EJECTA_SOURCE_DIR) + "/scenes/impact_rz.toml");
+  const auto s = craterSetupFromScene(rz);
+  ASSERT_TRUE(s.has_value());
+  EXPECT_EQ(s->surface.kind, ReferenceSurface::Kind::Sphere);
+  EXPECT_DOUBLE_EQ(s->surface.radius, 35.0);
+  EXPECT_NEAR(s->impactPoint[0], 0.0, 1e-12);
+  EXPECT_NEAR(s->impactPoint[1], 35.0, 1e-9);
+  EXPECT_EQ(s->targetNames, (std::vector<std::string>{"granite", "rubble"}));
+  EXPECT_DOUBLE_EQ(s->targetDensity, 2680.0);
+  EXPECT_FALSE(s->planar);
+
+  const Scene oblique = loadScene(std::string(EJECTA_SOURCE_DIR) + "/scenes/impact_3d_oblique.toml");
+  const auto o = craterSetupFromScene(oblique);
+  ASSERT_TRUE(o.has_value());
+  const Point& q = o->impactPoint;
+  EXPECT_NEAR(std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]), 35.0, 1e-6);  // on the sphere
+  EXPECT_NEAR(o->alongTrack[0], std::sqrt(0.5), 1e-4);
+  EXPECT_NEAR(o->alongTrack[2], -std::sqrt(0.5), 1e-4);
+
+  // A box target: the face the impactor's path meets, as a plane.
+  const Scene box = parseScene(impactScene("2d"), "tiny.toml");
+  const auto b = craterSetupFromScene(box);
+  ASSERT_TRUE(b.has_value());
+  EXPECT_EQ(b->surface.kind, ReferenceSurface::Kind::Plane);
+  EXPECT_DOUBLE_EQ(b->surface.normal[1], 1.0);
+  EXPECT_NEAR(b->impactPoint[1], 0.0, 1e-12);
+  EXPECT_TRUE(b->planar);
+
+  // Not an impact: nothing moves.
+  Scene still = box;
+  for (BodySpec& body : still.bodies) body.velocity = {0, 0, 0};
+  EXPECT_FALSE(craterSetupFromScene(still).has_value());
+  // Switched off.
+  EXPECT_FALSE(craterSetupFromScene(parseScene(impactScene("2d", "[crater]\nenabled = false\n"), "t")).has_value());
+}
+
+TEST(ImpactRunOutputs, GridsAndCraterAreWritten) {
+  const fs::path dir = fs::temp_directory_path() / ("ejecta_impact_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const Scene scene = parseScene(
+      impactScene("rz", "[fields]\ngrids = [\"density\", \"fractions\"]\nevery = 2\n"), "tiny.toml");
+  RunOptions options;
+  options.outDir = dir.string();
+  options.threads = 2;
+  options.configure = [](const Scene& s, RunOptions& o) { addFieldOutputs(o, s); };
+  const RunOutcome r = runScene(scene, options);
+  ASSERT_TRUE(r.ok) << r.error;
+  // Snapshots 0, 1, 2 (the last): every = 2 writes 0 and 2, and the last always.
+  EXPECT_TRUE(fs::exists(dir / "fields" / "fields_0000.vdb"));
+  EXPECT_FALSE(fs::exists(dir / "fields" / "fields_0001.vdb"));
+  ASSERT_TRUE(fs::exists(dir / "fields" / "fields_0002.vdb"));
+  const std::vector<StoredGrid> grids = readGridFileInfo((dir / "fields" / "fields_0002.vdb").string());
+  std::vector<std::string> names;
+  for (const StoredGrid& g : grids) names.push_back(g.name);
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"density", "fraction_aluminium", "fraction_granite", "surface"}));
+  EXPECT_EQ(grids[0].scene, "tiny_impact");
+  EXPECT_NEAR(grids[0].time, 60e-6, 1e-12);
+
+  std::ifstream in(dir / "summary.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  const nlohmann::json& x = j["extras"];
+  ASSERT_TRUE(x.contains("crater_found"));
+  ASSERT_TRUE(x["crater_found"].get<bool>()) << x.dump(2);
+  // A 0.1 m aluminium ball at 3 km/s, 60 us in: the cavity is a few spacings deep (measured
+  // 0.088 m) and wider than the ball (0.305 m), and far smaller than the target.
+  EXPECT_GT(x["crater_depth_m"].get<double>(), 0.06);
+  EXPECT_LT(x["crater_depth_m"].get<double>(), 0.3);
+  EXPECT_GT(x["crater_apparent_diameter_m"].get<double>(), 0.15);
+  EXPECT_LT(x["crater_apparent_diameter_m"].get<double>(), 1.0);
+  EXPECT_TRUE(fs::exists(dir / "crater_profile.csv"));
+
+  // The file measures the same crater as the particles, to a voxel or two (the grid's voxel is
+  // the median h, twice the particle measurement's resolution).
+  const GridFileCraterInput in2 = craterInputFromGridFile((dir / "fields" / "fields_0002.vdb").string());
+  const CraterMetrics fromFile = analyseCrater(in2.field, craterOptions(in2.setup, in2.voxel));
+  ASSERT_TRUE(fromFile.found) << fromFile.note;
+  EXPECT_NEAR(fromFile.depth, x["crater_depth_m"].get<double>(), 2 * in2.voxel);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace ejecta::fields
