@@ -27,8 +27,13 @@ test: build
 verification: build
 	cd $(BUILD) && ctest --output-on-failure -L verification
 
+# Each under a minute on 2 cores: SPH hydro (3D Sedov), particles to grids and VDB files (3D and
+# RZ revolved), and the impact scene's solid-mechanics overhead; the last two at 1 and 2 threads.
 bench: build
-	$(BUILD)/bench/ejecta_bench_sedov
+	$(BUILD)/bench/ejecta_bench_sedov --n 40
+	$(BUILD)/bench/ejecta_bench_fields --threads-sweep
+	$(BUILD)/bench/ejecta_bench_fields --geometry rz --threads-sweep
+	$(BUILD)/bench/ejecta_bench_impact --threads-sweep
 
 clean:
 	rm -rf $(BUILD) $(BUILD).configure.log

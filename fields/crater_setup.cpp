@@ -158,7 +158,16 @@ CraterOptions craterOptions(const CraterSetup& setup, double resolution) {
   CraterOptions o;
   o.surface = setup.surface;
   o.impactPoint = setup.impactPoint;
-  o.alongTrack = setup.alongTrack;
+  // A normal impact has no track along the surface (the longest diameter stands in for it).
+  const Point n = setup.surface.kind == ReferenceSurface::Kind::Sphere
+                      ? Point{setup.impactPoint[0] - setup.surface.center[0],
+                              setup.impactPoint[1] - setup.surface.center[1],
+                              setup.impactPoint[2] - setup.surface.center[2]}
+                      : setup.surface.normal;
+  const double a = norm(setup.alongTrack), b = norm(n);
+  const double along = a > 0.0 && b > 0.0 ? std::abs(dot(setup.alongTrack, n)) / (a * b) : 1.0;
+  constexpr double kNormal = 0.99985;  // cos 1 degree
+  o.alongTrack = along > kNormal ? Point{} : setup.alongTrack;
   o.planar = setup.planar;
   o.resolution = resolution;
   o.targetDensity = setup.targetDensity;

@@ -4,6 +4,8 @@
 #include <openvdb/tools/Interpolation.h>
 #include <openvdb/tools/LevelSetRebuild.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <mutex>
@@ -254,6 +256,23 @@ GridFileCraterInput craterInputFromGridFile(const std::string& path) {
   }
   file->close();
   if (grids.empty()) throw std::runtime_error(path + ": the crater metadata names no target material");
+  // A grid clipped to a region ends at its sides: measure no further than they are from the
+  // impact point, less two voxels, across the crater axis.
+  openvdb::CoordBBox box;
+  for (const auto& g : grids) box.expand(g->evalActiveVoxelBoundingBox());
+  const Point axis = c.surface.kind == ReferenceSurface::Kind::Sphere
+                         ? Point{c.impactPoint[0] - c.surface.center[0], c.impactPoint[1] - c.surface.center[1],
+                                 c.impactPoint[2] - c.surface.center[2]}
+                         : c.surface.normal;
+  const double axisNorm = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+  double limit = c.searchLimit > 0.0 ? c.searchLimit : INFINITY;
+  const int dims = c.planar ? 2 : 3;
+  for (int d = 0; d < dims; ++d) {
+    if (axisNorm > 0.0 && std::abs(axis[d]) / axisNorm > 0.5) continue;  // along the axis
+    const double lo = box.min()[d] * in.voxel, hi = box.max()[d] * in.voxel;
+    limit = std::min({limit, c.impactPoint[d] - lo - 2 * in.voxel, hi - c.impactPoint[d] - 2 * in.voxel});
+  }
+  if (std::isfinite(limit)) c.searchLimit = std::max(limit, in.voxel);
   // The samplers read the trees without accessors: safe from several threads at once.
   in.field = [grids](const Point& x) {
     double sum = 0.0;
