@@ -113,14 +113,22 @@ void writeGridFile(const std::string& path, const GridSet& set, const GridFileMe
     return maxK > 0 || lat.blockCount() == 0;
   }();
   if (meta.levelSet && thick && lat.blockCount() > 0) {
-    auto inverted = gridFromLattice(lat, 0.5f, [&](std::size_t b, int v) {
-      return 0.5f - lat.data(b, 0)[v];
-    });
-    auto surface = openvdb::tools::levelSetRebuild(*inverted, 0.0f, 3.0f);
-    surface->setName("surface");
-    surface->setGridClass(openvdb::GRID_LEVEL_SET);
-    tagGrid(*surface, "m", set, meta);
-    grids.push_back(surface);
+    // `surface`: all material (channel 0); `surface_<material>`: each body material whose plain
+    // fraction grid is written.
+    auto addSurface = [&](int channel, const std::string& name) {
+      auto inverted = gridFromLattice(lat, 0.5f, [&](std::size_t b, int v) {
+        return 0.5f - lat.data(b, channel)[v];
+      });
+      auto surface = openvdb::tools::levelSetRebuild(*inverted, 0.0f, 3.0f);
+      surface->setName(name);
+      surface->setGridClass(openvdb::GRID_LEVEL_SET);
+      tagGrid(*surface, "m", set, meta);
+      grids.push_back(surface);
+    };
+    addSurface(0, "surface");
+    for (const GridSpec& g : set.grids)
+      if (g.name.rfind("fraction_", 0) == 0 && !g.shepard)
+        addSurface(g.channel, "surface_" + g.name.substr(9));
   }
 
   openvdb::MetaMap fileMeta;

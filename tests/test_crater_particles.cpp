@@ -196,7 +196,7 @@ TEST(ImpactRunOutputs, GridsAndCraterAreWritten) {
   const fs::path dir = fs::temp_directory_path() / ("ejecta_impact_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   const Scene scene = parseScene(
-      impactScene("rz", "[fields]\ngrids = [\"density\", \"fractions\"]\nevery = 2\n"), "tiny.toml");
+      impactScene("rz", "[fields]\ngrids = [\"density\", \"fractions\"]\nevery = 2\nvoxel = \"0.03 m\"\n"), "tiny.toml");
   RunOptions options;
   options.outDir = dir.string();
   options.threads = 2;
@@ -211,7 +211,8 @@ TEST(ImpactRunOutputs, GridsAndCraterAreWritten) {
   std::vector<std::string> names;
   for (const StoredGrid& g : grids) names.push_back(g.name);
   std::sort(names.begin(), names.end());
-  EXPECT_EQ(names, (std::vector<std::string>{"density", "fraction_aluminium", "fraction_granite", "surface"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"density", "fraction_aluminium", "fraction_granite",
+                                              "surface", "surface_aluminium", "surface_granite"}));
   EXPECT_EQ(grids[0].scene, "tiny_impact");
   EXPECT_NEAR(grids[0].time, 60e-6, 1e-12);
 

@@ -292,10 +292,11 @@ TEST_F(GridFiles, RoundTripWithMetadataAndLevelSet) {
   const std::string path = (dir_ / "f.vdb").string();
   writeGridFile(path, set, meta());
   std::vector<StoredGrid> grids = readGridFileInfo(path);
-  ASSERT_EQ(grids.size(), 4u);
+  ASSERT_EQ(grids.size(), 5u);
   // OpenVDB lists a file's grids by name.
   std::sort(grids.begin(), grids.end(), [](const StoredGrid& a, const StoredGrid& b) {
-    const std::vector<std::string> order{"density", "temperature", "fraction_granite", "surface"};
+    const std::vector<std::string> order{"density", "temperature", "fraction_granite", "surface",
+                                         "surface_granite"};
     return std::find(order.begin(), order.end(), a.name) < std::find(order.begin(), order.end(), b.name);
   });
   EXPECT_EQ(grids[0].name, "density");
@@ -312,6 +313,8 @@ TEST_F(GridFiles, RoundTripWithMetadataAndLevelSet) {
   EXPECT_EQ(grids[2].name, "fraction_granite");
   EXPECT_EQ(grids[3].name, "surface");
   EXPECT_EQ(grids[3].gridClass, "level set");
+  EXPECT_EQ(grids[4].name, "surface_granite");  // one body material: the same surface
+  EXPECT_EQ(grids[4].activeVoxels, grids[3].activeVoxels);
   // Same active voxels as the lattice has voxels with material.
   std::size_t active = 0;
   for (std::size_t b = 0; b < set.lattice.blockCount(); ++b)
@@ -360,7 +363,7 @@ TEST_F(GridFiles, FailedWriteLeavesTheEarlierFileIntact) {
     EXPECT_NE(std::string(e.what()).find("keep.vdb"), std::string::npos) << e.what();
   }
   EXPECT_EQ(fs::file_size(path), size);
-  EXPECT_EQ(readGridFileInfo(path).size(), 2u);
+  EXPECT_EQ(readGridFileInfo(path).size(), 2u);  // density and the surface
   EXPECT_THROW(readGridFileInfo((dir_ / "missing.vdb").string()), std::runtime_error);
 }
 
