@@ -51,8 +51,9 @@ void printSummary(const RunOutcome& r, const std::string& outDir) {
       std::printf("  crater: none measured (%s)\n", std::get<std::string>(*note).c_str());
   }
   if (!outDir.empty())
-    std::printf("  outputs: %s/{summary.json, energy.csv, snapshots.xdmf, snapshots/}\n",
-                outDir.c_str());
+    std::printf("  outputs: %s/{summary.json, energy.csv, snapshots.xdmf, snapshots/%s%s}\n",
+                outDir.c_str(), fs::is_directory(fs::path(outDir) / "fields") ? ", fields/" : "",
+                fs::exists(fs::path(outDir) / "crater_profile.csv") ? ", crater_profile.csv" : "");
   if (!r.ok) std::fprintf(stderr, "ejecta: run failed: %s\n", r.error.c_str());
 }
 
