@@ -1,6 +1,8 @@
 #pragma once
 // Conserved totals over the real particles, summed in a fixed order (deterministic).
 #include <array>
+#include <cstddef>
+#include <vector>
 
 #include "sim/particles.hpp"
 
@@ -15,5 +17,9 @@ struct ConservedTotals {
 };
 
 ConservedTotals conservedTotals(const ParticleSet& p);
+
+// The same totals per material index [0, materials): the energy partition of the ledger (which
+// material holds how much kinetic and internal energy). Deterministic, serial.
+std::vector<ConservedTotals> conservedTotalsByMaterial(const ParticleSet& p, std::size_t materials);
 
 }  // namespace ejecta

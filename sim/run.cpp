@@ -14,6 +14,7 @@
 
 #include "sim/atomic_file.hpp"
 #include "sim/bodies.hpp"
+#include "sim/energy_ledger.hpp"
 #include "sim/kernel.hpp"
 #include "sim/snapshot.hpp"
 #include "sim/xdmf.hpp"
@@ -85,13 +86,22 @@ class RunOutputs {
     in.close();
     writeFileAtomically(path, kept);
   }
-  void openEnergyLog(bool append) {
+  // Scenes with several materials get the ledger's columns: <material>_kinetic_J and
+  // <material>_internal_J for each, after the totals.
+  void openEnergyLog(bool append, const Scene& scene) {
     if (!enabled()) return;
+    materials_ = scene.materials.size() > 1 ? scene.materials.size() : 0;
     const fs::path path = fs::path(options_.outDir) / "energy.csv";
     energy_.open(path, append ? std::ios::app : std::ios::trunc);
-    if (!append)
+    if (!append) {
       energy_ << "step,time_s,dt_s,kinetic_J,internal_J,total_J,relative_error,"
-                 "momentum_x,momentum_y,momentum_z\n";
+                 "momentum_x,momentum_y,momentum_z";
+      for (std::size_t m = 0; m < materials_; ++m) {
+        const std::string key = ledgerKey(scene.materials[m].name);
+        energy_ << ',' << key << "_kinetic_J," << key << "_internal_J";
+      }
+      energy_ << '\n';
+    }
     energy_.precision(12);
   }
   void logEnergy(const Simulation& sim, double e0) {
@@ -99,7 +109,11 @@ class RunOutputs {
     const ConservedTotals t = sim.totals();
     energy_ << sim.stepCount() << ',' << sim.time() << ',' << sim.lastDt() << ',' << t.kinetic
             << ',' << t.internal << ',' << t.total() << ',' << (t.total() - e0) / std::abs(e0)
-            << ',' << t.momentum[0] << ',' << t.momentum[1] << ',' << t.momentum[2] << '\n';
+            << ',' << t.momentum[0] << ',' << t.momentum[1] << ',' << t.momentum[2];
+    if (materials_ > 0)
+      for (const ConservedTotals& m : conservedTotalsByMaterial(sim.particles(), materials_))
+        energy_ << ',' << m.kinetic << ',' << m.internal;
+    energy_ << '\n';
   }
   void writeSnapshot(const Simulation& sim, SnapshotInfo info) {
     if (!enabled()) return;
@@ -116,6 +130,7 @@ class RunOutputs {
  private:
   const RunOptions& options_;
   std::ofstream energy_;
+  std::size_t materials_ = 0;  // ledger columns in energy.csv (0: one material, totals only)
   std::vector<XdmfEntry> xdmf_;
 };
 
@@ -186,6 +201,13 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
       const ConservedTotals t0 = sim.totals();
       info.initialEnergy = t0.total();
       info.initialMomentum = t0.momentum;
+      info.initialMaterialKinetic.clear();
+      info.initialMaterialInternal.clear();
+      for (const ConservedTotals& m :
+           conservedTotalsByMaterial(sim.particles(), scene.materials.size())) {
+        info.initialMaterialKinetic.push_back(m.kinetic);
+        info.initialMaterialInternal.push_back(m.internal);
+      }
       outputs.logEnergy(sim, info.initialEnergy);
       if (options.observer) options.observer(sim);
       snapshot(false);
@@ -244,6 +266,8 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
                       s.wallSeconds > 0 ? static_cast<double>(s.particles) *
                                               static_cast<double>(s.steps) / s.wallSeconds
                                         : 0.0});
+  addEnergyPartition(scene, info.initialMaterialKinetic, info.initialMaterialInternal,
+                     conservedTotalsByMaterial(sim.particles(), scene.materials.size()), s);
   if (options.onFinish) options.onFinish(sim, s);
   if (outputs.enabled())
     writeSummaryJson((fs::path(options.outDir) / "summary.json").string(), s);
@@ -259,7 +283,7 @@ RunOutcome runSimulation(Simulation& sim, const RunOptions& options) {
   info.scene = sim.scene().name;
   const double interval = sim.scene().output.snapshotInterval;
   info.nextOutputTime = interval > 0 ? interval : sim.scene().time.tEnd;
-  outputs.openEnergyLog(false);
+  outputs.openEnergyLog(false, sim.scene());
   return drive(sim, options, outputs, info, 0.0, false, true);
 }
 
@@ -317,7 +341,7 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
   }
   outputs.setSeries(series);
   outputs.truncateEnergyLog(info.step);
-  outputs.openEnergyLog(true);
+  outputs.openEnergyLog(true, scene);
 
   const int threads = resolveThreads(options.threads);
   MaterialTable materials = MaterialTable::fromScene(scene);

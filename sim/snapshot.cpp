@@ -294,6 +294,12 @@ void writeRestart(hid_t file, const ParticleSet& p, const SnapshotInfo& info) {
   writeScalarAttribute(g, "next_output_time", info.nextOutputTime);
   writeScalarAttribute(g, "initial_energy", info.initialEnergy);
   writeNumericAttribute(g, "initial_momentum", info.initialMomentum.data(), 3);
+  if (!info.initialMaterialKinetic.empty()) {
+    writeNumericAttribute(g, "initial_material_kinetic", info.initialMaterialKinetic.data(),
+                          info.initialMaterialKinetic.size());
+    writeNumericAttribute(g, "initial_material_internal", info.initialMaterialInternal.data(),
+                          info.initialMaterialInternal.size());
+  }
   writeScalarAttribute(g, "wall_seconds", info.wallSeconds);
 }
 
@@ -465,6 +471,16 @@ std::vector<T> readNumericAttribute(hid_t obj, const char* name, const std::stri
   return values;
 }
 
+// An attribute of any length that older files may lack (then empty).
+std::vector<double> readOptionalArrayAttribute(hid_t obj, const char* name, const std::string& owner) {
+  const htri_t exists = H5Aexists(obj, name);
+  if (exists <= 0) return {};
+  const Hid attr = openAttribute(obj, name, owner);
+  const Hid space = checked(H5Aget_space(attr.get()), H5Sclose, "cannot get the space of " + std::string(name));
+  const hssize_t points = H5Sget_simple_extent_npoints(space.get());
+  return readNumericAttribute<double>(obj, name, owner, static_cast<std::size_t>(points));
+}
+
 template <typename T>
 T readScalarAttribute(hid_t obj, const char* name, const std::string& owner) {
   return readNumericAttribute<T>(obj, name, owner, 1)[0];
@@ -505,6 +521,8 @@ void readRestartAttributes(hid_t file, SnapshotInfo& info) {
   const std::vector<double> momentum = readNumericAttribute<double>(g, "initial_momentum", owner, 3);
   for (int d = 0; d < 3; ++d) info.initialMomentum[d] = momentum[d];
   info.wallSeconds = readScalarAttribute<double>(g, "wall_seconds", owner);
+  info.initialMaterialKinetic = readOptionalArrayAttribute(g, "initial_material_kinetic", owner);
+  info.initialMaterialInternal = readOptionalArrayAttribute(g, "initial_material_internal", owner);
   info.sceneSource = readStringDataset(file, "/restart/scene_source");
 }
 

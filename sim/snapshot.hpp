@@ -4,6 +4,7 @@
 #include <array>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "sim/geometry.hpp"
 #include "sim/particles.hpp"
@@ -27,6 +28,9 @@ struct SnapshotInfo {
   double nextOutputTime = 0.0;   // time at which the next snapshot is due [s]
   double initialEnergy = 0.0;    // total energy at t = 0 [J], for conservation diagnostics
   std::array<double, 3> initialMomentum{};  // total momentum at t = 0 [kg m/s]
+  // Kinetic and internal energy of each material at t = 0 [J] (the energy ledger's reference);
+  // empty in snapshots written before the ledger existed.
+  std::vector<double> initialMaterialKinetic, initialMaterialInternal;
   double wallSeconds = 0.0;      // wall-clock time spent on the run so far [s]
   // Full text of the scene file the run was started from, so a resumed run does not depend on
   // the file being unchanged on disk. May be empty. Stored as dataset /restart/scene_source.
