@@ -4,8 +4,8 @@
 // own resolution, is in docs/fragmentation.md.
 //
 // The same analysis measures any run of that scene:
-//   EJECTA_FRAGMENTATION_RUN=runs/nf build/tests/test_fragmentation \
-//       --gtest_filter=Fragmentation.ReportRunDirectory
+//   EJECTA_FRAGMENTATION_RUN=runs/nf build/tests/test_fragmentation
+//       --gtest_filter=Fragmentation.ReportRunDirectory      (one command line)
 // It prints the damaged mass against time and, for the last snapshot, the damage pattern and the
 // intact fragments. Without the variable that test is skipped.
 #include <gtest/gtest.h>
@@ -149,26 +149,42 @@ struct FragmentationReport {
   double targetMass = 0.0;
   double damagedFraction = 0.0;   // mass with D > 0.99
   double meanDamage = 0.0;        // mass-weighted D
+  Vec targetMomentum{};           // [kg m/s]
+  Vec projectileVelocity{};       // mass-weighted velocity of everything but the target [m/s]
+  double plasticFraction = 0.0;   // mass with plastic strain > 1e-3
+  double plasticDepth = 0.0;      // the deepest such particle / R
+  // Speeds of the damaged (D > 0.99) target mass: mass-weighted median, 90th percentile, largest.
+  std::array<double, 3> damagedSpeeds{};
   // Damaged mass fraction (D > 0.99) in regions of the undeformed sphere:
   double impactCapDamaged = 0.0;  // depth < R/4 (the cap under the impact point)
   double antipodeCapDamaged = 0.0;  // depth > 7R/4 (the cap at the antipode)
   double coreDamaged = 0.0;       // r < R/2
   double shellDamaged = 0.0;      // r > 3R/4
+  double nearOuterDamaged = 0.0;  // r > R/2, polar angle < 60 degrees (around the impact point)
+  double farOuterDamaged = 0.0;   // r > R/2, polar angle > 120 degrees (around the antipode)
   // Along the axis (a cylinder of radius R/3 about it), in 8 bins of depth R/4.
   std::array<double, 8> axisDamaged{};
   // Polar angle (6 bins of 30 degrees) by radius (r/R in [0, 1/4, 1/2, 3/4, 9/10, 1]).
   std::array<std::array<double, 6>, 5> mapDamaged{};
   // Intact fragments: connected groups of target particles with D below a threshold, linked by
   // current distances below 1.5 target spacings. Fractions of the target mass, largest first.
+  struct Group {
+    double fraction = 0.0;     // of the target's mass
+    Vec velocity{};            // mass-weighted [m/s]
+    double centreDepth = 0.0;  // depth of its initial centre of mass / R
+    double meanRadius = 0.0;   // mass-weighted mean initial distance from the centre / R
+  };
   struct Fragments {
     double threshold = 1.0;
-    std::vector<double> largest;  // the five largest
+    std::vector<Group> largest;   // the five largest, largest first
     std::size_t groups = 0;       // all groups, single particles included
     double intactFraction = 0.0;  // all particles below the threshold
-    Vec velocity{};               // mass-weighted velocity of the largest [m/s]
-    double centreDepth = 0.0;     // depth of the largest's initial centre of mass / R
   };
   std::vector<Fragments> fragments;  // thresholds 1 (D < 1), 0.99, 0.5
+  // The slice 0 < y < spacing of the undeformed sphere (x to the right, z up; the projectile
+  // comes down from the upper right): 'O' the largest intact (D < 1) group, 'o' other intact,
+  // '@' the second largest, '#' D > 0.99.
+  std::vector<std::string> slice;
 };
 
 FragmentationReport analyse(const ParticleSet& initial, const ParticleSet& p,
@@ -182,14 +198,20 @@ FragmentationReport analyse(const ParticleSet& initial, const ParticleSet& p,
     double mass = 0.0, damaged = 0.0;
     double fraction() const { return mass > 0.0 ? damaged / mass : 0.0; }
   };
-  Bin all, impactCap, antipodeCap, core, shell;
+  Bin all, impactCap, antipodeCap, core, shell, nearOuter, farOuter;
   std::array<Bin, 8> axis{};
   std::array<std::array<Bin, 6>, 5> map{};
   const std::array<double, 5> radialEdges = {0.25, 0.5, 0.75, 0.9, 1.0};
   std::vector<std::size_t> target;
-  double damageSum = 0.0;
+  double damageSum = 0.0, projectileMass = 0.0, plasticMass = 0.0;
+  std::vector<std::pair<double, double>> damagedSpeed;  // (speed, mass)
   for (std::size_t i = 0; i < p.numReal; ++i) {
-    if (p.material[i] != frame.material) continue;
+    if (p.material[i] != frame.material) {
+      projectileMass += p.mass[i];
+      for (int d = 0; d < 3; ++d) r.projectileVelocity[d] += p.mass[i] * p.v[d][i];
+      continue;
+    }
+    for (int d = 0; d < 3; ++d) r.targetMomentum[d] += p.mass[i] * p.v[d][i];
     target.push_back(i);
     const std::size_t i0 = initialOfId.at(p.id[i]);
     const Vec rel = sub({initial.x[0][i0], initial.x[1][i0], initial.x[2][i0]}, frame.centre);
@@ -202,6 +224,11 @@ FragmentationReport analyse(const ParticleSet& initial, const ParticleSet& p,
     const double D = p.damage(i);
     const double broken = D > 0.99 ? m : 0.0;
     damageSum += m * D;
+    if (!p.plasticStrain.empty() && p.plasticStrain[i] > 1e-3) {
+      plasticMass += m;
+      r.plasticDepth = std::max(r.plasticDepth, depth / R);
+    }
+    if (D > 0.99) damagedSpeed.emplace_back(norm({p.v[0][i], p.v[1][i], p.v[2][i]}), m);
     auto add = [&](Bin& b) {
       b.mass += m;
       b.damaged += broken;
@@ -211,19 +238,34 @@ FragmentationReport analyse(const ParticleSet& initial, const ParticleSet& p,
     if (depth > 1.75 * R) add(antipodeCap);
     if (radius < 0.5 * R) add(core);
     if (radius > 0.75 * R) add(shell);
+    if (radius > 0.5 * R && polar < std::numbers::pi / 3.0) add(nearOuter);
+    if (radius > 0.5 * R && polar > 2.0 * std::numbers::pi / 3.0) add(farOuter);
     if (offAxis < R / 3.0) add(axis[std::clamp(static_cast<int>(depth / (0.25 * R)), 0, 7)]);
     int ring = 0;
     while (ring < 4 && radius > radialEdges[ring] * R) ++ring;
     const int sector = std::clamp(static_cast<int>(polar / (std::numbers::pi / 6.0)), 0, 5);
     add(map[ring][sector]);
   }
+  for (double& v : r.projectileVelocity) v /= projectileMass;
   r.targetMass = all.mass;
+  r.plasticFraction = plasticMass / all.mass;
+  std::sort(damagedSpeed.begin(), damagedSpeed.end());
+  double damagedMass = 0.0, below = 0.0;
+  for (const auto& [v, m] : damagedSpeed) damagedMass += m;
+  for (const auto& [v, m] : damagedSpeed) {
+    if (below < 0.5 * damagedMass && below + m >= 0.5 * damagedMass) r.damagedSpeeds[0] = v;
+    if (below < 0.9 * damagedMass && below + m >= 0.9 * damagedMass) r.damagedSpeeds[1] = v;
+    below += m;
+  }
+  if (!damagedSpeed.empty()) r.damagedSpeeds[2] = damagedSpeed.back().first;
   r.damagedFraction = all.fraction();
   r.meanDamage = damageSum / all.mass;
   r.impactCapDamaged = impactCap.fraction();
   r.antipodeCapDamaged = antipodeCap.fraction();
   r.coreDamaged = core.fraction();
   r.shellDamaged = shell.fraction();
+  r.nearOuterDamaged = nearOuter.fraction();
+  r.farOuterDamaged = farOuter.fraction();
   for (int b = 0; b < 8; ++b) r.axisDamaged[b] = axis[b].fraction();
   for (int ring = 0; ring < 5; ++ring)
     for (int s = 0; s < 6; ++s) r.mapDamaged[ring][s] = map[ring][s].fraction();
@@ -244,19 +286,41 @@ FragmentationReport analyse(const ParticleSet& initial, const ParticleSet& p,
               [&](const auto& a, const auto& b) { return massOf(a) > massOf(b); });
     f.groups = groups.size();
     for (const std::size_t i : intact) f.intactFraction += p.mass[i] / all.mass;
-    for (std::size_t g = 0; g < std::min<std::size_t>(5, groups.size()); ++g)
-      f.largest.push_back(massOf(groups[g]) / all.mass);
-    if (!groups.empty()) {
-      const double m = massOf(groups[0]);
+    for (std::size_t g = 0; g < std::min<std::size_t>(5, groups.size()); ++g) {
+      FragmentationReport::Group info;
+      const double m = massOf(groups[g]);
+      info.fraction = m / all.mass;
       Vec centre{};
-      for (const std::size_t i : groups[0]) {
+      for (const std::size_t i : groups[g]) {
         const std::size_t i0 = initialOfId.at(p.id[i]);
+        const Vec x0 = {initial.x[0][i0], initial.x[1][i0], initial.x[2][i0]};
         for (int d = 0; d < 3; ++d) {
-          f.velocity[d] += p.mass[i] * p.v[d][i] / m;
-          centre[d] += p.mass[i] * initial.x[d][i0] / m;
+          info.velocity[d] += p.mass[i] * p.v[d][i] / m;
+          centre[d] += p.mass[i] * x0[d] / m;
         }
+        info.meanRadius += p.mass[i] * norm(sub(x0, frame.centre)) / (m * R);
       }
-      f.centreDepth = (R - dot(sub(centre, frame.centre), frame.axis)) / R;
+      info.centreDepth = (R - dot(sub(centre, frame.centre), frame.axis)) / R;
+      f.largest.push_back(info);
+    }
+    if (threshold == 1.0) {
+      const double s = frame.spacing;
+      const int n = static_cast<int>(std::ceil(2.0 * R / s));
+      r.slice.assign(static_cast<std::size_t>(n), std::string(static_cast<std::size_t>(n), ' '));
+      std::vector<char> rank(p.numReal, 0);
+      for (std::size_t g = 0; g < std::min<std::size_t>(2, groups.size()); ++g)
+        for (const std::size_t i : groups[g]) rank[i] = static_cast<char>(g + 1);
+      for (const std::size_t i : target) {
+        const std::size_t i0 = initialOfId.at(p.id[i]);
+        const double y = initial.x[1][i0] - frame.centre[1];
+        if (!(y > 0.0 && y < s)) continue;
+        const int col = static_cast<int>(std::floor((initial.x[0][i0] - frame.centre[0] + R) / s));
+        const int row = static_cast<int>(std::floor((initial.x[2][i0] - frame.centre[2] + R) / s));
+        if (col < 0 || col >= n || row < 0 || row >= n) continue;
+        const double D = p.damage(i);
+        r.slice[static_cast<std::size_t>(n - 1 - row)][static_cast<std::size_t>(col)] =
+            rank[i] == 1 ? 'O' : rank[i] == 2 ? '@' : D <= 0.99 ? 'o' : '#';
+      }
     }
     r.fragments.push_back(f);
   }
@@ -266,9 +330,18 @@ FragmentationReport analyse(const ParticleSet& initial, const ParticleSet& p,
 void print(const FragmentationReport& r) {
   std::printf("t = %.1f us: target %.4g kg, damaged (D > 0.99) %.3f of the mass, mean D %.3f\n",
               r.time * 1e6, r.targetMass, r.damagedFraction, r.meanDamage);
+  std::printf("target momentum (%.4f, %.4f, %.4f) kg m/s; projectile at (%.0f, %.0f, %.0f) m/s\n",
+              r.targetMomentum[0], r.targetMomentum[1], r.targetMomentum[2],
+              r.projectileVelocity[0], r.projectileVelocity[1], r.projectileVelocity[2]);
+  std::printf("plastic (strain > 1e-3): %.4f of the mass, down to depth %.3f R; damaged mass "
+              "moves at %.1f (median), %.1f (90%%), %.1f (largest) m/s\n",
+              r.plasticFraction, r.plasticDepth, r.damagedSpeeds[0], r.damagedSpeeds[1],
+              r.damagedSpeeds[2]);
   std::printf("damaged fraction: impact cap %.3f, antipode cap %.3f, core (r < R/2) %.3f, "
-              "shell (r > 3R/4) %.3f\n",
-              r.impactCapDamaged, r.antipodeCapDamaged, r.coreDamaged, r.shellDamaged);
+              "shell (r > 3R/4) %.3f; r > R/2 within 60 deg of the impact point %.3f, of the antipode "
+              "%.3f\n",
+              r.impactCapDamaged, r.antipodeCapDamaged, r.coreDamaged, r.shellDamaged,
+              r.nearOuterDamaged, r.farOuterDamaged);
   std::printf("along the axis (depth/R 0 -> 2, bins of 1/4):");
   for (const double a : r.axisDamaged) std::printf(" %.2f", a);
   std::printf("\npolar angle from the impact direction (deg):  0-30 30-60 60-90 90-120 120-150 "
@@ -281,33 +354,42 @@ void print(const FragmentationReport& r) {
     std::printf("\n");
   }
   for (const auto& f : r.fragments) {
-    std::printf("intact groups (D < %.2f): %.3f of the mass intact in %zu groups; largest", f.threshold,
-                f.intactFraction, f.groups);
-    for (const double g : f.largest) std::printf(" %.4f", g);
-    std::printf("; largest moves at (%.2f, %.2f, %.2f) m/s, its centre at depth %.2f R\n",
-                f.velocity[0], f.velocity[1], f.velocity[2], f.centreDepth);
+    std::printf("intact groups (D < %.2f): %.3f of the mass intact in %zu groups; largest",
+                f.threshold, f.intactFraction, f.groups);
+    for (const auto& g : f.largest) std::printf(" %.4f", g.fraction);
+    std::printf("\n");
   }
+  for (const auto& g : r.fragments.front().largest)
+    std::printf("  group %.4f: centre at depth %.2f R, mean radius %.2f R, velocity (%.2f, %.2f, "
+                "%.2f) m/s, speed %.2f m/s\n",
+                g.fraction, g.centreDepth, g.meanRadius, g.velocity[0], g.velocity[1],
+                g.velocity[2], norm(g.velocity));
+  std::printf("slice 0 < y < spacing (x right, z up; O largest intact group, @ second, o other "
+              "intact, # D > 0.99):\n");
+  for (const std::string& line : r.slice) std::printf("  |%s|\n", line.c_str());
 }
 
-// The scene at reduced resolution: 2.5 mm spacing (~7,200 target particles, 24 across the
-// diameter) and an 8-particle projectile whose spacing keeps its mass at 0.2 g.
-TEST(Fragmentation, BasaltSphereBreaksAroundAnIntactCore) {
+// The scene at reduced resolution: 2.5 mm spacing (7,208 target particles, 24 across the
+// diameter) and an 8-particle projectile whose spacing keeps its mass at 0.2 g, to 20 us. By then
+// the core and the outer spall shell have separated; to 60 us they change by a few % of the mass.
+TEST(Fragmentation, CoreTypeBreakUpOfABasaltSphere) {
   const std::string path = std::string(EJECTA_SOURCE_DIR) + "/scenes/nakamura_fujiwara.toml";
-  const Scene scene = loadScene(path, {"bodies[0].spacing=2.5 mm", "bodies[1].spacing=2.7624 mm"});
+  const Scene scene = loadScene(path, {"bodies[0].spacing=2.5 mm", "bodies[1].spacing=2.76317 mm",
+                                       "time.t_end=20 us"});
   const ImpactFrame frame = impactFrame(scene);
   // First contact 30 degrees from the projectile's path, as in the experiment.
   EXPECT_NEAR(frame.angle * 180.0 / std::numbers::pi, 30.0, 0.01);
 
   ParticleSet initial, last;
-  RunOptions options;
-  options.onFinish = [&](const Simulation& sim, RunSummary&) { last = sim.particles(); };
   {
     const MaterialTable materials = MaterialTable::fromScene(scene);
     initial = buildParticles(scene, materials);
   }
+  RunOptions options;
+  options.onFinish = [&](const Simulation& sim, RunSummary&) { last = sim.particles(); };
   const RunOutcome outcome = runScene(scene, options);
   ASSERT_TRUE(outcome.ok) << outcome.error;
-  EXPECT_LT(outcome.summary.energy.relativeError, 1e-3);
+  EXPECT_LT(std::abs(outcome.summary.energy.relativeError), 1e-3);
   double projectileMass = 0.0;
   for (std::size_t i = 0; i < initial.numReal; ++i)
     if (initial.material[i] != frame.material) projectileMass += initial.mass[i];
@@ -315,20 +397,33 @@ TEST(Fragmentation, BasaltSphereBreaksAroundAnIntactCore) {
 
   const FragmentationReport r = analyse(initial, last, frame, outcome.summary.tEnd);
   print(r);
-  // The impact site is crushed and the damage front has crossed the sphere: the antipode is
-  // spalled.
+  // Measured: the impact cap 1.00 damaged, the outer half within 60 degrees of the impact point
+  // 0.98 and of the antipode 0.36; 0.71 of the mass damaged; a core of 0.072 (mean radius
+  // 0.49 R, centre at depth 1.26 R) at 1.8 m/s and a spall shell of 0.22 at 5.5 m/s. The bounds
+  // are wide because fragment masses move with resolution: the core holds 0.20 at the scene's
+  // 1.5 mm and 0.24 at 1.2 mm (docs/fragmentation.md).
+  // The struck side is shattered, the far side much less.
   EXPECT_GT(r.impactCapDamaged, 0.9);
-  EXPECT_GT(r.antipodeCapDamaged, 0.5);
-  // Core-type: the outer shell breaks up more than the core, and an intact core remains.
-  EXPECT_GT(r.shellDamaged, r.coreDamaged);
-  EXPECT_GT(r.damagedFraction, 0.3);
-  EXPECT_LT(r.damagedFraction, 0.95);
-  const auto& fragments = r.fragments.front();  // D < 1
-  ASSERT_FALSE(fragments.largest.empty());
-  EXPECT_GT(fragments.largest[0], 0.05);
-  EXPECT_LT(fragments.largest[0], 0.9);
-  // The largest piece moves slowly, along the projectile's path (-z): metres per second.
-  EXPECT_LT(norm(fragments.velocity), 30.0);
+  EXPECT_GT(r.nearOuterDamaged, 0.9);
+  EXPECT_LT(r.farOuterDamaged, 0.6);
+  EXPECT_GT(r.damagedFraction, 0.5);
+  EXPECT_LT(r.damagedFraction, 0.85);
+  // Core type: an intact core (mean radius below R/2 + 10%) and, separated from it by a spall
+  // layer, an intact outer shell on the far side (mean radius above 0.85 R). The core moves away
+  // from the impact point, slower than the shell (the experiment's core: 1.35 m/s).
+  const auto& groups = r.fragments.front().largest;  // D < 1
+  const auto core = std::find_if(groups.begin(), groups.end(),
+                                 [](const auto& g) { return g.meanRadius < 0.6; });
+  const auto shell = std::find_if(groups.begin(), groups.end(),
+                                  [](const auto& g) { return g.meanRadius > 0.85; });
+  ASSERT_NE(core, groups.end());
+  ASSERT_NE(shell, groups.end());
+  EXPECT_GT(core->fraction, 0.03);
+  EXPECT_GT(shell->fraction, 0.03);
+  EXPECT_GT(core->centreDepth, 1.0);
+  EXPECT_GT(-dot(core->velocity, frame.axis), 0.5);
+  EXPECT_LT(norm(core->velocity), 4.0);
+  EXPECT_LT(norm(core->velocity), norm(shell->velocity));
 }
 
 // Measures a run of scenes/nakamura_fujiwara.toml (any resolution): EJECTA_FRAGMENTATION_RUN
@@ -359,12 +454,16 @@ TEST(Fragmentation, ReportRunDirectory) {
                   info.wallSeconds);
       print(r);
     } else {
-      std::printf("t = %5.1f us: damaged %.3f, mean D %.3f, largest intact (D < 1) %.3f\n",
+      const auto& f = r.fragments.front();
+      std::printf("t = %5.1f us: damaged %.3f, mean D %.3f, largest intact (D < 1) %.3f moving at "
+                  "%.2f m/s\n",
                   r.time * 1e6, r.damagedFraction, r.meanDamage,
-                  r.fragments.front().largest.empty() ? 0.0 : r.fragments.front().largest[0]);
+                  f.largest.empty() ? 0.0 : f.largest[0].fraction,
+                  f.largest.empty() ? 0.0 : norm(f.largest[0].velocity));
     }
   }
 }
 
 }  // namespace
 }  // namespace ejecta
+
