@@ -36,6 +36,7 @@
 #include "fields/measure_crater.hpp"
 #include "fields/revolve.hpp"
 #include "fields/vdb_grids.hpp"
+#include "bench/arguments.hpp"
 #include "sim/run.hpp"
 
 using namespace ejecta;
@@ -62,12 +63,9 @@ struct Options {
 
 Options parseOptions(int argc, char** argv) {
   Options o;
-  for (int a = 1; a < argc; ++a) {
-    const std::string arg = argv[a];
-    auto next = [&]() -> const char* {
-      if (a + 1 >= argc) { std::fprintf(stderr, "missing value for %s\n", arg.c_str()); std::exit(2); }
-      return argv[++a];
-    };
+  bench::Arguments args(argc, argv);
+  for (std::string arg; args.next(arg);) {
+    auto next = [&args] { return args.value(); };
     if (arg == "--n") o.n = std::atoi(next());
     else if (arg == "--geometry") {
       const std::string g = next();

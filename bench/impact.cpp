@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/arguments.hpp"
 #include "sim/bodies.hpp"
 #include "sim/run.hpp"
 #include "sim/simulation.hpp"
@@ -39,12 +40,9 @@ struct Options {
 
 Options parseOptions(int argc, char** argv) {
   Options o;
-  for (int a = 1; a < argc; ++a) {
-    const std::string arg = argv[a];
-    auto next = [&]() -> const char* {
-      if (a + 1 >= argc) { std::fprintf(stderr, "missing value for %s\n", arg.c_str()); std::exit(2); }
-      return argv[++a];
-    };
+  bench::Arguments args(argc, argv);
+  for (std::string arg; args.next(arg);) {
+    auto next = [&args] { return args.value(); };
     if (arg == "--geometry") o.geometry = next();
     else if (arg == "--scene") o.scene = next();
     else if (arg == "--set") o.overrides.push_back(next());

@@ -15,6 +15,7 @@
 #include <numbers>
 #include <string>
 
+#include "bench/arguments.hpp"
 #include "sim/exact/sedov.hpp"
 #include "sim/run.hpp"
 #include "sim/simulation.hpp"
@@ -26,12 +27,9 @@ int main(int argc, char** argv) {
   double eta = 1.2, tEnd = 0.05, conductivity = 0.0;
   bool balsara = false, json = false;
   std::string kernel = "cubic_spline";
-  for (int a = 1; a < argc; ++a) {
-    const std::string arg = argv[a];
-    auto next = [&]() -> const char* {
-      if (a + 1 >= argc) { std::fprintf(stderr, "missing value for %s\n", arg.c_str()); std::exit(2); }
-      return argv[++a];
-    };
+  bench::Arguments args(argc, argv);
+  for (std::string arg; args.next(arg);) {
+    auto next = [&args] { return args.value(); };
     if (arg == "--n") n = std::atoi(next());
     else if (arg == "--threads") threads = std::atoi(next());
     else if (arg == "--eta") eta = std::atof(next());

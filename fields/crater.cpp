@@ -251,6 +251,27 @@ Setup makeSetup(const CraterOptions& o) {
   return s;
 }
 
+// Runs body(i) for i in [0, n) under OpenMP and rethrows the first exception afterwards (an
+// exception must not leave a parallel region).
+template <typename Body>
+void parallelForRethrowing(std::ptrdiff_t n, int chunk, Body body) {
+  std::exception_ptr error;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, chunk)
+#endif
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    try {
+      body(i);
+    } catch (...) {
+#ifdef _OPENMP
+#pragma omp critical(ejecta_crater_error)
+#endif
+      if (!error) error = std::current_exception();
+    }
+  }
+  if (error) std::rethrow_exception(error);
+}
+
 void appendNote(std::string& note, const std::string& text) {
   if (!note.empty()) note += "; ";
   note += text;
@@ -267,23 +288,11 @@ CraterMetrics analyseCrater(const FractionField& field, const CraterOptions& opt
 
   // Every ray writes its own slot, so the result does not depend on the thread count.
   std::vector<Ray> grid(static_cast<std::size_t>(rays));
-  std::exception_ptr error;
-#ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 16)
-#endif
-  for (std::ptrdiff_t r = 0; r < rays; ++r) {
-    try {
-      const int bin = static_cast<int>(r / sectors);
-      grid[static_cast<std::size_t>(r)] =
-          marchRay(field, s, (bin + 0.5) * s.resolution, static_cast<int>(r % sectors));
-    } catch (...) {
-#ifdef _OPENMP
-#pragma omp critical(ejecta_crater_error)
-#endif
-      if (!error) error = std::current_exception();
-    }
-  }
-  if (error) std::rethrow_exception(error);
+  parallelForRethrowing(rays, 16, [&](std::ptrdiff_t r) {
+    const int bin = static_cast<int>(r / sectors);
+    grid[static_cast<std::size_t>(r)] =
+        marchRay(field, s, (bin + 0.5) * s.resolution, static_cast<int>(r % sectors));
+  });
 
   auto depthAt = [&](int i, int k) {
     return -grid[static_cast<std::size_t>(i) * sectors + k].height;
@@ -362,36 +371,26 @@ CraterMetrics analyseCrater(const FractionField& field, const CraterOptions& opt
       ++notReturned;
     }
   }
-#ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 1)
-#endif
-  for (int k = 0; k < sectors; ++k) {
+  parallelForRethrowing(sectors, 1, [&](std::ptrdiff_t kk) {
+    const int k = static_cast<int>(kk);
     const int i = outside[static_cast<std::size_t>(k)];
-    if (i < 0) continue;
-    try {
-      double lo = rhoAt(i - 1), hi = rhoAt(i);
-      double dLo = depthAt(i - 1, k), dHi = depthAt(i, k);
-      for (int iteration = 0; iteration < kBisections; ++iteration) {
-        const double mid = 0.5 * (lo + hi);
-        const double d = -marchRay(field, s, mid, k).height;
-        if (d > level) {
-          lo = mid;
-          dLo = d;
-        } else {
-          hi = mid;
-          dHi = d;
-        }
+    if (i < 0) return;
+    double lo = rhoAt(i - 1), hi = rhoAt(i);
+    double dLo = depthAt(i - 1, k), dHi = depthAt(i, k);
+    for (int iteration = 0; iteration < kBisections; ++iteration) {
+      const double mid = 0.5 * (lo + hi);
+      const double d = -marchRay(field, s, mid, k).height;
+      if (d > level) {
+        lo = mid;
+        dLo = d;
+      } else {
+        hi = mid;
+        dHi = d;
       }
-      m.apparentRadius[static_cast<std::size_t>(k)] =
-          lo + std::clamp(dLo / (dLo - dHi), 0.0, 1.0) * (hi - lo);
-    } catch (...) {
-#ifdef _OPENMP
-#pragma omp critical(ejecta_crater_error)
-#endif
-      if (!error) error = std::current_exception();
     }
-  }
-  if (error) std::rethrow_exception(error);
+    m.apparentRadius[static_cast<std::size_t>(k)] =
+        lo + std::clamp(dLo / (dLo - dHi), 0.0, 1.0) * (hi - lo);
+  });
 
   std::vector<double> crest(static_cast<std::size_t>(sectors), 0.0);
   std::vector<double> crestHeight(static_cast<std::size_t>(sectors), 0.0);

@@ -52,8 +52,6 @@ void addFieldOutputs(RunOptions& options, const Scene& scene) {
   const std::optional<CraterSetup> crater = craterSetupFromScene(scene);
 
   if (scene.fields.enabled) {
-    // Names checked now for the same reason.
-    expandGridNames(scene.fields.grids, ctx.materialNames);
     const GridRequest request = GridRequest::fromScene(scene.fields);
     const int every = scene.fields.every;
     const bool levelSet = scene.fields.levelSet;

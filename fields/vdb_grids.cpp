@@ -25,16 +25,6 @@ void initialiseOpenVdb() {
   std::call_once(once, [] { openvdb::initialize(); });
 }
 
-std::string sourceName(Geometry g) {
-  switch (g) {
-    case Geometry::Spatial: return "3d";
-    case Geometry::Axisymmetric: return "rz";
-    case Geometry::Planar: return "2d";
-    case Geometry::Line: return "1d";
-  }
-  return "";
-}
-
 openvdb::Vec3d vec(const Point& p) { return {p[0], p[1], p[2]}; }
 Point point(const openvdb::Vec3d& v) { return {v[0], v[1], v[2]}; }
 
@@ -45,7 +35,7 @@ void tagGrid(openvdb::GridBase& grid, const std::string& units, const GridSet& s
   grid.insertMeta("step", openvdb::Int64Metadata(meta.step));
   grid.insertMeta("scene", openvdb::StringMetadata(meta.scene));
   grid.insertMeta("voxel_size", openvdb::DoubleMetadata(set.lattice.voxel()));
-  grid.insertMeta("source_geometry", openvdb::StringMetadata(sourceName(set.source)));
+  grid.insertMeta("source_geometry", openvdb::StringMetadata(std::string(geometryName(set.source))));
 }
 
 // A FloatGrid from the lattice, one leaf per block; `value(b, v, active)` gives each voxel.
@@ -136,7 +126,7 @@ void writeGridFile(const std::string& path, const GridSet& set, const GridFileMe
   fileMeta.insertMeta("scene", openvdb::StringMetadata(meta.scene));
   fileMeta.insertMeta("time", openvdb::DoubleMetadata(meta.time));
   fileMeta.insertMeta("step", openvdb::Int64Metadata(meta.step));
-  fileMeta.insertMeta("source_geometry", openvdb::StringMetadata(sourceName(set.source)));
+  fileMeta.insertMeta("source_geometry", openvdb::StringMetadata(std::string(geometryName(set.source))));
   fileMeta.insertMeta("particles", openvdb::Int64Metadata(static_cast<openvdb::Int64>(set.particles)));
   if (meta.crater) {
     const CraterSetup& c = *meta.crater;

@@ -18,6 +18,7 @@
 #include "fields/vdb_grids.hpp"
 #include "sim/run.hpp"
 #include "sim/scene.hpp"
+#include "tests/support/tiny_impact.hpp"
 
 namespace fs = std::filesystem;
 
@@ -112,47 +113,10 @@ TEST(CraterFromParticles, HalfDiscHolePlanar) {
 }
 
 std::string impactScene(const std::string& dimension, const std::string& extra = "") {
-  const bool planar = dimension == "2d";
-  return R"(
-[scene]
-name = "tiny_impact"
-dimension = ")" + dimension + R"("
-[sph]
-density = "continuity"
-form = "interface"
-[time]
-t_end = "60 us"
-[output]
-snapshot_interval = "30 us"
-)" + extra + R"(
-[[materials]]
-name = "granite"
-eos = "tillotson"
-library = "granite"
-[[materials]]
-name = "aluminium"
-eos = "mie_gruneisen"
-library = "Al-2024"
-[[bodies]]
-name = "impactor"
-material = "aluminium"
-shape = "sphere"
-center = [0.0, "0.12 m"]
-radius = "0.1 m"
-spacing = "0.02 m"
-density = "2785 kg/m^3"
-pressure = 0.0
-velocity = [0.0, "-3 km/s"]
-[[bodies]]
-name = "target"
-material = "granite"
-shape = "box"
-min = [)" + (planar ? std::string("\"-1 m\"") : std::string("0.0")) + R"(, "-0.6 m"]
-max = ["1 m", 0.0]
-spacing = "0.02 m"
-density = "2680 kg/m^3"
-pressure = 0.0
-)";
+  test::TinyImpact o;
+  o.dimension = dimension;
+  o.extra = extra;
+  return test::tinyImpactScene(o);
 }
 
 TEST(CraterSetupFromScene, ImpactScenesGiveSurfaceImpactPointAndTargets) {

@@ -16,52 +16,21 @@
 #include "sim/energy_ledger.hpp"
 #include "sim/run.hpp"
 #include "sim/snapshot.hpp"
+#include "tests/support/tiny_impact.hpp"
 
 namespace fs = std::filesystem;
 
 namespace ejecta {
 namespace {
 
-// A 0.1 m aluminium ball at 3 km/s on a granite block, RZ, 1,540 particles.
-const char* kImpact = R"(
-[scene]
-name = "ledger_impact"
-dimension = "rz"
-[sph]
-density = "continuity"
-form = "interface"
-[time]
-t_end = "40 us"
-[output]
-snapshot_interval = "20 us"
-[[materials]]
-name = "granite"
-eos = "tillotson"
-library = "granite"
-[[materials]]
-name = "Al 2024"
-eos = "mie_gruneisen"
-library = "Al-2024"
-[[bodies]]
-name = "impactor"
-material = "Al 2024"
-shape = "sphere"
-center = [0.0, "0.12 m"]
-radius = "0.1 m"
-spacing = "0.02 m"
-density = "2785 kg/m^3"
-pressure = 0.0
-velocity = [0.0, "-3 km/s"]
-[[bodies]]
-name = "target"
-material = "granite"
-shape = "box"
-min = [0.0, "-0.6 m"]
-max = ["1 m", 0.0]
-spacing = "0.02 m"
-density = "2680 kg/m^3"
-pressure = 0.0
-)";
+// The shared tiny impact, with a material name that needs escaping in the ledger's keys.
+const std::string kImpact = [] {
+  test::TinyImpact o;
+  o.tEnd = "40 us";
+  o.snapshotInterval = "20 us";
+  o.impactorMaterial = "Al 2024";
+  return test::tinyImpactScene(o);
+}();
 
 TEST(EnergyLedger, GroupsAndKeys) {
   const Scene scene = parseScene(kImpact, "ledger.toml");
