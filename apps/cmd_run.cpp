@@ -50,6 +50,23 @@ void printSummary(const RunOutcome& r, const std::string& outDir) {
     else if (const SummaryValue* note = extra("crater_note"))
       std::printf("  crater: none measured (%s)\n", std::get<std::string>(*note).c_str());
   }
+  if (extra("yield_J") || extra("yield_J_per_m")) {
+    if (extra("yield_kt"))
+      std::printf("  source: yield %.4g kt (%.4g J)", number("yield_kt"), number("yield_J"));
+    else
+      std::printf("  source: yield %.4g J per metre (2D planar)", number("yield_J_per_m"));
+    if (extra("depth_of_burst_m")) {
+      std::printf(", depth of burst %.3g m", number("depth_of_burst_m"));
+      if (extra("scaled_depth_of_burst_m_per_kt3"))
+        std::printf(" (scaled %.3g m/kt^1/3)", number("scaled_depth_of_burst_m_per_kt3"));
+    }
+    std::printf("\n");
+    if (extra("target_share_of_yield"))
+      std::printf("  coupling: the target holds %.1f%% of the yield (%.1f%% kinetic, %.1f%% "
+                  "internal); the device keeps %.1f%%\n",
+                  100 * number("target_share_of_yield"), 100 * number("target_kinetic_fraction"),
+                  100 * number("target_internal_fraction"), 100 * number("explosive_share_of_yield"));
+  }
   if (!outDir.empty())
     std::printf("  outputs: %s/{summary.json, energy.csv, snapshots.xdmf, snapshots/%s%s}\n",
                 outDir.c_str(), fs::is_directory(fs::path(outDir) / "fields") ? ", fields/" : "",

@@ -45,6 +45,15 @@ struct CraterArgs {
 };
 int craterCommand(const CraterArgs& args);
 
+struct SweepArgs {
+  std::string scene;                   // SCENE.toml
+  std::vector<std::string> vary;       // key=v1,v2,... (axes vary together)
+  std::vector<std::string> overrides;  // --set applied to every variant
+  std::string outDir;                  // default runs/<scene name>_sweep
+  int jobs = 0;                        // variants at once (default: one per core)
+};
+int sweepCommand(const SweepArgs& args);
+
 // True when stderr is a terminal and CI is not set: show progress lines.
 bool interactive();
 

@@ -48,6 +48,16 @@ int main(int argc, char** argv) {
   craterCmd->add_option("--profile", craterArgs.profile, "Write the radial profile as CSV");
   craterCmd->add_option("--resolution", craterArgs.resolution, "Measuring resolution, e.g. \"0.1 m\"");
 
+  ejecta::app::SweepArgs sweepArgs;
+  CLI::App* sweepCmd = app.add_subcommand("sweep", "Run variants of a scene and tabulate what each coupled into the target");
+  sweepCmd->add_option("scene", sweepArgs.scene, "Scene file (TOML)")->required();
+  sweepCmd->add_option("--vary", sweepArgs.vary,
+                       "key=v1,v2,...: values of one key; several --vary change together")
+      ->required()->take_all();
+  sweepCmd->add_option("--set", sweepArgs.overrides, "Override a key in every variant")->take_all();
+  sweepCmd->add_option("--out,-o", sweepArgs.outDir, "Output directory (default runs/<scene name>_sweep)");
+  sweepCmd->add_option("--jobs", sweepArgs.jobs, "Variants run at once (default: one per core)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -58,6 +68,7 @@ int main(int argc, char** argv) {
     if (*verifyCmd) return ejecta::app::verifyCommand(verify);
     if (*fieldsCmd) return ejecta::app::fieldsCommand(fieldsArgs);
     if (*craterCmd) return ejecta::app::craterCommand(craterArgs);
+    if (*sweepCmd) return ejecta::app::sweepCommand(sweepArgs);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ejecta: error: %s\n", e.what());
     return 1;

@@ -61,7 +61,9 @@ AxisCorrection::AxisCorrection(KernelKind kernel) : I_(kTableSize), dI_(kTableSi
 
 void AxisCorrection::smoothedRadius(double r, double h, double& rt, double& drt_dr) const {
   const double xi = std::abs(r) / h;
-  if (xi >= 2.0) {
+  // Beyond the support, and for a NaN state (which the step's health check then reports with
+  // the particle, rather than this table being indexed out of range).
+  if (!(xi < 2.0)) {
     rt = std::abs(r);
     drt_dr = 1.0;
     return;

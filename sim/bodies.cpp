@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "sim/jwl.hpp"
+#include "sim/programmed_burn.hpp"
 #include "sim/tensor.hpp"
 #include "sim/units.hpp"
 
@@ -149,6 +151,13 @@ double initialSpecificEnergy(const BodySpec& body, const MaterialTable& material
   if (body.material < 0 || static_cast<std::size_t>(body.material) >= materials.size())
     throw SceneError(context + ": material index out of range");
   const EquationOfState& eos = *materials[static_cast<std::size_t>(body.material)].eos;
+  // A detonated explosive without a given state carries its chemical energy (the scene checked
+  // that a detonation lights it).
+  if (!body.pressure) {
+    if (const auto* jwl = dynamic_cast<const Jwl*>(&eos))
+      return jwl->params().specificDetonationEnergy();
+    throw SceneError(context + ": give 'pressure' or 'internal_energy'");
+  }
   try {
     return eos.specificEnergy(body.density, body.pressure.value_or(0.0));
   } catch (const std::domain_error& e) {
@@ -196,15 +205,22 @@ double distanceSquared(const Point& a, const Point& b, int dim) {
 
 // Adds the deposit so that sum_i m_i du_i = E exactly: du_i = E w_i / sum_j m_j w_j, with
 // w = 1 inside the top hat (0 outside) or w = exp(-r^2/width^2).
-void applyDeposit(const Scene& scene, std::size_t index, ParticleSet& p) {
+// A body deposit (dep.body >= 0) weighs only that body's particles, [firstOfBody[b],
+// firstOfBody[b + 1]); without a centre, all of them equally (du = E / M_body, the seed's DED).
+void applyDeposit(const Scene& scene, std::size_t index, const std::vector<std::size_t>& firstOfBody,
+                  ParticleSet& p) {
   const EnergyDepositSpec& dep = scene.deposits[index];
   const int dim = spatialDimension(scene.geometry);
   const std::size_t n = p.size();
   std::vector<double> w(n, 0.0);
   double weightedMass = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
+  const std::size_t begin = dep.body >= 0 ? firstOfBody[static_cast<std::size_t>(dep.body)] : 0;
+  const std::size_t end = dep.body >= 0 ? firstOfBody[static_cast<std::size_t>(dep.body) + 1] : n;
+  for (std::size_t i = begin; i < end; ++i) {
     const double r2 = distanceSquared({p.x[0][i], p.x[1][i], p.x[2][i]}, dep.center, dim);
-    if (dep.profile == DepositProfile::TopHat)
+    if (!dep.hasCenter)
+      w[i] = 1.0;
+    else if (dep.profile == DepositProfile::TopHat)
       w[i] = (r2 <= dep.radius * dep.radius) ? 1.0 : 0.0;
     else
       w[i] = std::exp(-r2 / (dep.width * dep.width));
@@ -213,10 +229,11 @@ void applyDeposit(const Scene& scene, std::size_t index, ParticleSet& p) {
   if (!(weightedMass > 0.0))
     throw SceneError(where(scene, dep.line) + ": key 'energy_deposits[" + std::to_string(index) +
                      "]': deposit '" + dep.name + "' covers no particles (" +
-                     (dep.profile == DepositProfile::TopHat
-                          ? "radius " + formatQuantity(dep.radius, Dimension::Length)
-                          : "width " + formatQuantity(dep.width, Dimension::Length)) +
-                     " around its centre)");
+                     (!dep.hasCenter ? std::string("its body has none)")
+                      : (dep.profile == DepositProfile::TopHat
+                             ? "radius " + formatQuantity(dep.radius, Dimension::Length)
+                             : "width " + formatQuantity(dep.width, Dimension::Length)) +
+                            " around its centre)"));
   const double scale = dep.energy / weightedMass;
   for (std::size_t i = 0; i < n; ++i) p.u[i] += scale * w[i];
 }
@@ -259,9 +276,10 @@ ParticleSet buildParticles(const Scene& scene, const MaterialTable& materials) {
     fillBody(scene, materials, b, p);
   }
   firstOfBody.push_back(p.size());
-  for (std::size_t k = 0; k < scene.deposits.size(); ++k) applyDeposit(scene, k, p);
+  for (std::size_t k = 0; k < scene.deposits.size(); ++k) applyDeposit(scene, k, firstOfBody, p);
   for (std::size_t i = 0; i < p.size(); ++i) p.id[i] = static_cast<std::int64_t>(i);
   p.numReal = p.size();
+  assignLightingTimes(scene, materials, p);
   // Solid state exists only when a material needs it ("model no more than the scene asks").
   if (materials.anyStrength())
     p.enableStrength(stressComponentCount(spatialDimension(scene.geometry)));

@@ -3,6 +3,7 @@
 #include <functional>
 #include <set>
 #include <stdexcept>
+#include <vector>
 
 #include "sim/jwl.hpp"
 #include "sim/mie_gruneisen.hpp"
@@ -100,7 +101,14 @@ Params assemble(const MaterialSpec& spec, const std::vector<Field<Params>>& fiel
 const std::vector<EosKind>& eosKinds() {
   static const std::vector<EosKind> kinds = {
       {"ideal_gas", {{"gamma", Dimension::None}}, {}},
-      {"tillotson", parameterList(kTillotsonFields), tillotsonLibraryNames()},
+      {"tillotson",
+       [] {
+         // Not an EOS constant but its tension cut-off (TillotsonOptions::minimumPressure).
+         std::vector<EosParameter> list = parameterList(kTillotsonFields);
+         list.push_back({"minimum_pressure", Dimension::Pressure});
+         return list;
+       }(),
+       tillotsonLibraryNames()},
       {"mie_gruneisen", parameterList(kShockFields), shockMaterialNames()},
       {"jwl", parameterList(kJwlFields), jwlExplosiveNames()},
   };
@@ -115,9 +123,20 @@ const EosKind* findEosKind(std::string_view name) {
 
 std::shared_ptr<const EquationOfState> makeEquationOfState(const MaterialSpec& spec) {
   if (spec.eos == "ideal_gas") return std::make_shared<IdealGas>(spec.gamma);
-  if (spec.eos == "tillotson")
-    return std::make_shared<Tillotson>(assemble<TillotsonParameters>(
-        spec, kTillotsonFields, [](std::string_view n) { return tillotsonLibrary(n); }));
+  if (spec.eos == "tillotson") {
+    // minimum_pressure is an option of the EOS, not one of its library constants.
+    TillotsonOptions options;
+    MaterialSpec constants = spec;
+    std::erase_if(constants.parameters, [&](const auto& kv) {
+      if (kv.first != "minimum_pressure") return false;
+      options.minimumPressure = kv.second;
+      return true;
+    });
+    return std::make_shared<Tillotson>(
+        assemble<TillotsonParameters>(constants, kTillotsonFields,
+                                      [](std::string_view n) { return tillotsonLibrary(n); }),
+        options);
+  }
   if (spec.eos == "mie_gruneisen")
     return std::make_shared<MieGruneisen>(assemble<ShockMaterial>(
         spec, kShockFields, [](std::string_view n) { return shockMaterial(n); }));

@@ -19,6 +19,7 @@ const std::vector<ParticleFieldInfo>& particleScalarFields() {
       {"velocity_y", "m/s", "velocity, y component (RZ: axial)"},
       {"velocity_z", "m/s", "velocity, z component"},
       {"smoothing_length", "m", "smoothing length h"},
+      {"burn_fraction", "1", "programmed-burn fraction (1 where nothing burns)"},
   };
   return fields;
 }
@@ -48,6 +49,7 @@ std::vector<double> particleScalarField(const ParticleSet& p, std::string_view n
   if (name == "sound_speed") return copy(p.cs);
   if (name == "plastic_strain") return copy(p.plasticStrain);
   if (name == "smoothing_length") return copy(p.h);
+  if (name == "burn_fraction") return p.hasBurn() ? copy(p.burnFraction) : std::vector<double>(n, 1.0);
   if (name == "velocity_x") return copy(p.v[0]);
   if (name == "velocity_y") return copy(p.v[1]);
   if (name == "velocity_z") return copy(p.v[2]);

@@ -1,6 +1,7 @@
 #include "sim/particles.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace ejecta {
 
@@ -23,6 +24,7 @@ void forEachArray(ParticleSet& p, F&& f) {
   for (int c = 0; c < p.stressComponents(); ++c) { f(p.stress[c]); f(p.dstress_dt[c]); }
   if (p.stressComponents() > 0) { f(p.plasticStrain); f(p.totalStrain); f(p.strainRate); }
   if (p.hasFracture()) { f(p.crack); f(p.dcrack_dt); }
+  if (p.hasBurn()) { f(p.lightingTime); f(p.burnFraction); }
 }
 
 }  // namespace
@@ -49,6 +51,12 @@ void ParticleSet::enableFracture() {
   fracture_ = true;
   crack.assign(size(), 0.0);
   dcrack_dt.assign(size(), 0.0);
+}
+
+void ParticleSet::enableBurn() {
+  burn_ = true;
+  lightingTime.assign(size(), -std::numeric_limits<double>::infinity());
+  burnFraction.assign(size(), 1.0);
 }
 
 void ParticleSet::append(const std::array<double, 3>& pos, const std::array<double, 3>& vel,

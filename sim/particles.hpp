@@ -57,6 +57,12 @@ struct ParticleSet {
   std::vector<double> crack;
   std::vector<double> dcrack_dt;      // [1/s]
 
+  // --- Programmed burn: allocated only when the scene detonates an explosive (enableBurn) ---
+  // Lighting time t_L [s] (-infinity: not an explosive, always burnt) and burn fraction F in
+  // [0, 1], the factor on the JWL pressure (sim/programmed_burn.hpp). F never decreases.
+  std::vector<double> lightingTime;
+  std::vector<double> burnFraction;
+
   std::size_t numReal = 0;
   // For ghost k (index numReal + k): the real particle it images.
   std::vector<std::size_t> ghostSource;
@@ -64,11 +70,14 @@ struct ParticleSet {
   std::size_t size() const { return mass.size(); }
   int stressComponents() const { return stressComponents_; }
   bool hasFracture() const { return fracture_; }
+  bool hasBurn() const { return burn_; }
   double damage(std::size_t i) const { return fracture_ ? crack[i] * crack[i] * crack[i] : 0.0; }
   // Allocate (zeroed) the solid-mechanics arrays for `components` stress components (4 or 6).
   void enableStrength(int components);
   // Allocate (zeroed) the fracture arrays.
   void enableFracture();
+  // Allocate the burn arrays: every particle burnt (t_L = -infinity, F = 1) until set.
+  void enableBurn();
   std::size_t numGhosts() const { return size() - numReal; }
 
   // Resize every array to n particles (new entries zeroed; omega set to 1).
@@ -85,6 +94,7 @@ struct ParticleSet {
  private:
   int stressComponents_ = 0;
   bool fracture_ = false;
+  bool burn_ = false;
 };
 
 }  // namespace ejecta

@@ -91,6 +91,10 @@ class RunOutputs {
   void openEnergyLog(bool append, const Scene& scene) {
     if (!enabled()) return;
     materials_ = scene.materials.size() > 1 ? scene.materials.size() : 0;
+    // The target's gain as a share of the yield (a source) or of the impactor's kinetic energy.
+    const LedgerGroups g = ledgerGroups(scene);
+    coupling_ = materials_ > 0 && !g.target.empty() &&
+                (!g.impactor.empty() || !scene.detonations.empty() || !scene.deposits.empty());
     const fs::path path = fs::path(options_.outDir) / "energy.csv";
     energy_.open(path, append ? std::ios::app : std::ios::trunc);
     if (!append) {
@@ -100,6 +104,7 @@ class RunOutputs {
         const std::string key = ledgerKey(scene.materials[m].name);
         energy_ << ',' << key << "_kinetic_J," << key << "_internal_J";
       }
+      if (coupling_) energy_ << ",target_share";
       energy_ << '\n';
     }
     energy_.precision(12);
@@ -110,9 +115,11 @@ class RunOutputs {
     energy_ << sim.stepCount() << ',' << sim.time() << ',' << sim.lastDt() << ',' << t.kinetic
             << ',' << t.internal << ',' << t.total() << ',' << (t.total() - e0) / std::abs(e0)
             << ',' << t.momentum[0] << ',' << t.momentum[1] << ',' << t.momentum[2];
-    if (materials_ > 0)
-      for (const ConservedTotals& m : conservedTotalsByMaterial(sim.particles(), materials_))
-        energy_ << ',' << m.kinetic << ',' << m.internal;
+    if (materials_ > 0) {
+      const std::vector<ConservedTotals> byMaterial = conservedTotalsByMaterial(sim.particles(), materials_);
+      for (const ConservedTotals& m : byMaterial) energy_ << ',' << m.kinetic << ',' << m.internal;
+      if (coupling_) energy_ << ',' << couplingShare(reference_, byMaterial);
+    }
     energy_ << '\n';
   }
   void writeSnapshot(const Simulation& sim, SnapshotInfo info) {
@@ -126,11 +133,14 @@ class RunOutputs {
     writeXdmfSeries((fs::path(options_.outDir) / "snapshots.xdmf").string(), xdmf_);
   }
   void setSeries(std::vector<XdmfEntry> entries) { xdmf_ = std::move(entries); }
+  void setCouplingReference(CouplingReference ref) { reference_ = std::move(ref); }
 
  private:
   const RunOptions& options_;
   std::ofstream energy_;
   std::size_t materials_ = 0;  // ledger columns in energy.csv (0: one material, totals only)
+  bool coupling_ = false;      // energy.csv has the target_share column
+  CouplingReference reference_;
   std::vector<XdmfEntry> xdmf_;
 };
 
@@ -194,6 +204,9 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
     if (options.onOutput) options.onOutput(sim, info, final);
     ++info.snapshotIndex;
   };
+  if (!fresh)
+    outputs.setCouplingReference(couplingReference(scene, info.initialMaterialKinetic,
+                                                   info.initialMaterialInternal));
   try {
     if (fresh) {
       // Derivatives of the initial state; snapshot 0 holds it with them.
@@ -208,6 +221,8 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
         info.initialMaterialKinetic.push_back(m.kinetic);
         info.initialMaterialInternal.push_back(m.internal);
       }
+      outputs.setCouplingReference(couplingReference(scene, info.initialMaterialKinetic,
+                                                     info.initialMaterialInternal));
       outputs.logEnergy(sim, info.initialEnergy);
       if (options.observer) options.observer(sim);
       snapshot(false);

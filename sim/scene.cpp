@@ -28,7 +28,7 @@ const std::map<std::string_view, KeyList>& schemaTables() {
     return std::map<std::string_view, KeyList>{
         {"",
          {"scene", "domain", "sph", "time", "output", "fields", "crater", "materials", "bodies",
-          "energy_deposits"}},
+          "energy_deposits", "detonations"}},
         {"scene", {"name", "description", "dimension"}},
         {"domain", {"x", "y", "z"}},
         {"domain.x", axis},
@@ -62,7 +62,8 @@ const std::map<std::string_view, KeyList>& schemaTables() {
          {"name", "material", "shape", "min", "max", "center", "radius", "inner_radius",
           "outer_radius", "point", "normal", "lattice", "spacing", "density", "pressure",
           "internal_energy", "velocity", "damage"}},
-        {"energy_deposits[]", {"name", "energy", "center", "radius", "profile", "width"}},
+        {"energy_deposits[]", {"name", "energy", "body", "center", "radius", "profile", "width"}},
+        {"detonations[]", {"name", "material", "point", "line_to", "time", "velocity"}},
     };
   }();
   return tables;
@@ -927,9 +928,9 @@ void readBodies(const TableReader& root, Scene& scene) {
     r.check(b.density > 0.0, "density", positiveMessage(b.density, Dimension::Density));
     b.pressure = r.optQuantity("pressure", Dimension::Pressure);
     b.internalEnergy = r.optQuantity("internal_energy", Dimension::SpecificEnergy);
-    if (b.pressure.has_value() == b.internalEnergy.has_value())
-      r.fail(b.pressure ? "internal_energy" : "pressure",
-             "give exactly one of 'pressure' and 'internal_energy'");
+    // Neither is allowed for a detonated explosive (checked in readDetonations).
+    if (b.pressure && b.internalEnergy)
+      r.fail("internal_energy", "give exactly one of 'pressure' and 'internal_energy'");
     if (b.pressure)
       r.check(*b.pressure >= 0.0, "pressure", nonNegativeMessage(*b.pressure, Dimension::Pressure));
     if (b.internalEnergy)
@@ -959,11 +960,26 @@ void readDeposits(const TableReader& root, Scene& scene) {
     checkUniqueName(r, names, e.name);
     e.energy = r.requireQuantity("energy", Dimension::Energy);
     r.check(e.energy > 0.0, "energy", positiveMessage(e.energy, Dimension::Energy));
-    r.require("center");
-    e.center = *r.optVector("center", m, dim, vectorLayout(scene.geometry));
-    if (scene.geometry == Geometry::Axisymmetric)
-      r.check(e.center[0] == 0.0, "center",
-              "in rz the deposit must be centred on the axis (r = 0)");
+    if (const std::optional<std::string> body = r.optString("body")) {
+      for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+        if (scene.bodies[b].name == *body) e.body = static_cast<int>(b);
+      r.check(e.body >= 0, "body", "no body named '" + *body + "'");
+    }
+    // A body deposit without a centre covers the whole body (the seed's device particles).
+    e.hasCenter = e.body < 0 || r.has("center");
+    if (e.hasCenter) {
+      r.require("center");
+      e.center = *r.optVector("center", m, dim, vectorLayout(scene.geometry));
+      if (scene.geometry == Geometry::Axisymmetric)
+        r.check(e.center[0] == 0.0, "center",
+                "in rz the deposit must be centred on the axis (r = 0)");
+    } else {
+      r.check(!r.has("radius") && !r.has("width") && !r.has("profile"), "radius",
+              "a deposit over a whole body takes no radius, width or profile (give a 'center' "
+              "to deposit in part of it)");
+      scene.deposits.push_back(std::move(e));
+      continue;
+    }
     e.profile = r.optEnum("profile", kProfiles).value_or(e.profile);
     if (e.profile == DepositProfile::TopHat) {
       r.check(!r.has("width"), "width", "only a 'gaussian' profile takes a width");
@@ -975,6 +991,63 @@ void readDeposits(const TableReader& root, Scene& scene) {
       r.check(e.width > 0.0, "width", positiveMessage(e.width, m));
     }
     scene.deposits.push_back(std::move(e));
+  }
+}
+
+void readDetonations(const TableReader& root, Scene& scene) {
+  const std::vector<const toml::table*> list = root.tableArray("detonations");
+  const int dim = spatialDimension(scene.geometry);
+  const Dimension m = Dimension::Length;
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const TableReader r(root.context(), *list[i], "detonations[" + std::to_string(i) + "]",
+                        "detonations[]");
+    DetonationSpec d;
+    d.line = lineOf(*list[i]);
+    d.name = r.requireString("name");
+    checkUniqueName(r, names, d.name);
+    const std::string material = r.requireString("material");
+    d.material = -1;
+    for (std::size_t k = 0; k < scene.materials.size(); ++k)
+      if (scene.materials[k].name == material) d.material = static_cast<int>(k);
+    r.check(d.material >= 0, "material", "no material named '" + material + "'");
+    r.check(scene.materials[static_cast<std::size_t>(d.material)].eos == "jwl", "material",
+            "material '" + material + "' is not a JWL explosive (eos = \"jwl\"); programmed "
+            "burn lights detonation products");
+    r.require("point");
+    d.point = *r.optVector("point", m, dim, vectorLayout(scene.geometry));
+    if (const auto end = r.optVector("line_to", m, dim, vectorLayout(scene.geometry))) {
+      d.alongLine = true;
+      d.lineEnd = *end;
+    }
+    if (scene.geometry == Geometry::Axisymmetric) {
+      r.check(d.point[0] == 0.0, "point", "in rz the initiation point must be on the axis (r = 0)");
+      r.check(!d.alongLine || d.lineEnd[0] == 0.0, "line_to",
+              "in rz an initiation line must lie on the axis (r = 0)");
+    }
+    d.time = r.optQuantity("time", Dimension::Time).value_or(0.0);
+    r.check(d.time >= 0.0, "time", nonNegativeMessage(d.time, Dimension::Time));
+    d.velocity = r.optQuantity("velocity", Dimension::Velocity).value_or(0.0);
+    r.check(d.velocity >= 0.0, "velocity", nonNegativeMessage(d.velocity, Dimension::Velocity));
+    for (const DetonationSpec& other : scene.detonations)
+      r.check(other.material != d.material || other.velocity == d.velocity, "velocity",
+              "detonations of one explosive must share one detonation velocity");
+    scene.detonations.push_back(std::move(d));
+  }
+  // A body with neither pressure nor internal energy must be an explosive lit here: it starts at
+  // its detonation energy (sim/bodies.cpp).
+  const std::vector<const toml::table*> bodies = root.tableArray("bodies");
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    const BodySpec& body = scene.bodies[b];
+    if (body.pressure || body.internalEnergy) continue;
+    bool lit = false;
+    for (const DetonationSpec& d : scene.detonations) lit = lit || d.material == body.material;
+    if (!lit) {
+      const TableReader r(root.context(), *bodies[b], "bodies[" + std::to_string(b) + "]",
+                          "bodies[]");
+      r.fail("pressure", "give exactly one of 'pressure' and 'internal_energy' (only a body of "
+                         "an explosive with a [[detonations]] entry may give neither)");
+    }
   }
 }
 
@@ -991,6 +1064,7 @@ Scene validate(const toml::table& doc, const std::string& sourceName) {
   readMaterials(root, scene);
   readBodies(root, scene);
   readDeposits(root, scene);
+  readDetonations(root, scene);
   readFields(root, scene);
   readCrater(root, scene);
   return scene;

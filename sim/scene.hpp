@@ -115,22 +115,41 @@ struct BodySpec {
   LatticeKind lattice = LatticeKind::Cubic;
   double spacing = 0.0;                     // [m]
   double density = 0.0;                     // [kg/m^3]
-  std::optional<double> pressure;           // [Pa]; exactly one of pressure / internalEnergy
-  std::optional<double> internalEnergy;     // [J/kg]
+  // [Pa] or [J/kg]: exactly one, except for a body of a detonated JWL explosive, which may give
+  // neither and then starts at the explosive's detonation energy e0 = E0 / rho0.
+  std::optional<double> pressure;
+  std::optional<double> internalEnergy;
   std::array<double, 3> velocity{};         // [m/s]
   double damage = 0.0;                      // initial damage D in [0, 1] (1: rubble)
   int line = 0;
 };
 
-// Energy added to the particles of a region at t = 0 (a blast source; later the DED of yields).
+// Direct energy deposition (DED): energy added at t = 0 to the particles of a region, or of one
+// body (the device, as the seed's Sec. 3.1.1 models a yield as high-energy granite particles).
 struct EnergyDepositSpec {
   std::string name;
   double energy = 0.0;                      // [J]; in 2D planar per metre depth
+  int body = -1;                            // index into Scene::bodies; -1: every particle
+  bool hasCenter = true;                    // false: a body deposit over the whole body
   std::array<double, 3> center{};
   double radius = 0.0;                      // TopHat: particles with |x - c| <= radius
   DepositProfile profile = DepositProfile::TopHat;
   double width = 0.0;                       // Gaussian: exp(-r^2/width^2)
   int line = 0;
+};
+
+// A detonation of a JWL explosive by programmed burn (docs/sources.md): each particle of the
+// material is lit at t_L = time + (distance to the initiation point or line) / velocity, and its
+// pressure is scaled by a burn fraction that rises from 0 to 1 as the front crosses it.
+struct DetonationSpec {
+  std::string name;
+  int material = 0;                         // index into Scene::materials (a JWL explosive)
+  std::array<double, 3> point{};            // initiation point, or the start of the line
+  bool alongLine = false;                   // true: initiated along the segment point -> lineEnd
+  std::array<double, 3> lineEnd{};
+  double time = 0.0;                        // initiation time [s]
+  double velocity = 0.0;                    // [m/s]; 0 = the explosive's C-J velocity
+  int line = 0;                             // source line in the scene file
 };
 
 struct OutputOptions {
@@ -177,6 +196,7 @@ struct Scene {
   std::vector<MaterialSpec> materials;
   std::vector<BodySpec> bodies;             // earlier bodies win where shapes overlap
   std::vector<EnergyDepositSpec> deposits;
+  std::vector<DetonationSpec> detonations;
   OutputOptions output;
   FieldsOutputOptions fields;
   CraterAnalysisOptions crater;

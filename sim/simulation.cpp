@@ -12,6 +12,7 @@
 
 #include "sim/density_pass.hpp"
 #include "sim/hydro_force.hpp"
+#include "sim/programmed_burn.hpp"
 
 namespace ejecta {
 
@@ -81,6 +82,10 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
     ws_.artificialStress = scene_.sph.artificialStress < 0.0 ? 0.3 : scene_.sph.artificialStress;
   }
   if (materials_.anyFracture() && !p_.hasFracture()) p_.enableFracture();
+  burnVelocity_ = burnVelocities(scene_, materials_);
+  if (!scene_.detonations.empty() && !p_.hasBurn())
+    throw SimulationError("scene '" + scene_.name + "' detonates an explosive but the particles "
+                          "carry no lighting times (build them with buildParticles)");
 }
 
 void Simulation::distributeFlaws(const ParticleSet& initial) {
@@ -90,6 +95,7 @@ void Simulation::distributeFlaws(const ParticleSet& initial) {
 
 void Simulation::initialise() {
   if (!flawsReady_) distributeFlaws(p_);
+  stateTime_ = time_;
   if (scene_.sph.density == DensityMethod::Continuity &&
       scene_.sph.smoothingLength == SmoothingLengthMethod::Neighbours)
     setSmoothingFromDensity(p_, ws_);
@@ -102,6 +108,7 @@ void Simulation::initialise() {
 void Simulation::resume(double time, long step, double dtNext) {
   if (!flawsReady_) distributeFlaws(p_);
   time_ = time;
+  stateTime_ = time;
   step_ = step;
   dtNext_ = dtNext;
 }
@@ -135,6 +142,7 @@ void Simulation::evaluateEquationOfState() {
     materials_[m].eos->evaluate(p_.rho.data(), p_.u.data(), p_.P.data(), p_.cs.data(),
                                 members.data(), members.size());
   }
+  applyProgrammedBurn(p_, burnVelocity_, scene_.sph.eta, stateTime_);
   applyMaterialState(p_, materials_);
 }
 
@@ -313,6 +321,7 @@ void Simulation::step(double limit) {
   if (continuity && sph.smoothingLength == SmoothingLengthMethod::Neighbours)
     setSmoothingFromDensity(p_, ws_);
 
+  stateTime_ = time_ + dt;
   evaluateDerivatives();
 
   // Second kick with the new derivatives.

@@ -78,6 +78,10 @@ class Simulation {
   double hMin_ = 0.0;
   std::uint32_t maxNeighbours_ = 1u << 30;
   std::vector<std::vector<std::size_t>> materialMembers_;
+  // Programmed burn: detonation velocity per material (0: not detonated), and the time of the
+  // state the equation of state is evaluated for (the predicted end of the step).
+  std::vector<double> burnVelocity_;
+  double stateTime_ = 0.0;
   // Leapfrog half-step state.
   Vec3Array vHalf_;
   std::vector<double> uHalf_, rhoHalf_, hHalf_;

@@ -252,6 +252,10 @@ void writeParticles(hid_t file, const ParticleSet& p, Geometry geometry) {
     for (std::size_t i = 0; i < n; ++i) damage[i] = p.damage(i);
     writeScalarField(g, {"damage", "1", "damage D in [0, 1] (1: no tension, no shear)"}, damage, n);
   }
+  if (p.hasBurn())
+    writeScalarField(g, {"burn_fraction", "1",
+                         "programmed-burn fraction F in [0, 1] (the factor on the JWL pressure)"},
+                     p.burnFraction, n);
 }
 
 void writeStringDataset(hid_t group, const char* name, const std::string& text,
@@ -288,6 +292,10 @@ void writeRestart(hid_t file, const ParticleSet& p, const SnapshotInfo& info) {
     writeScalarField(g, {"crack", "1", "crack fraction D^(1/3)"}, p.crack, n);
     writeScalarField(g, {"dcrack_dt", "1/s", "rate of the crack fraction"}, p.dcrack_dt, n);
   }
+  if (p.hasBurn())
+    writeScalarField(g, {"lighting_time", "s",
+                         "programmed-burn lighting time (-inf: not an explosive)"},
+                     p.lightingTime, n);
   writeStringDataset(g, "scene_source", info.sceneSource, "text of the scene file of the run");
   writeScalarAttribute(g, "dt_next", info.dtNext);
   writeScalarAttribute<std::int64_t>(g, "snapshot_index", info.snapshotIndex);
@@ -570,6 +578,11 @@ ParticleSet readParticles(hid_t file) {
     p.enableFracture();
     p.crack = readDataset<double>(file, "/restart/crack", n, false);
     p.dcrack_dt = readDataset<double>(file, "/restart/dcrack_dt", n, false);
+  }
+  if (linkExists(file, "/restart/lighting_time")) {
+    p.enableBurn();
+    p.lightingTime = readDataset<double>(file, "/restart/lighting_time", n, false);
+    p.burnFraction = readDataset<double>(file, "/particles/burn_fraction", n, false);
   }
   return p;
 }

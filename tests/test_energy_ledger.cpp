@@ -70,9 +70,10 @@ TEST(EnergyLedger, ImpactRunPartitionAddsUpAndSurvivesRestart) {
 
   std::vector<std::string> header;
   const auto rows = readCsv(dir / "energy.csv", header);
-  ASSERT_EQ(header.size(), 14u);
+  ASSERT_EQ(header.size(), 15u);
   EXPECT_EQ(header[10], "granite_kinetic_J");
   EXPECT_EQ(header[13], "Al_2024_internal_J");
+  EXPECT_EQ(header[14], "target_share");
   ASSERT_GT(rows.size(), 10u);
   for (const auto& row : rows) {
     // The per-material columns are the same sums split by material: equal to rounding of the
@@ -95,6 +96,10 @@ TEST(EnergyLedger, ImpactRunPartitionAddsUpAndSurvivesRestart) {
   EXPECT_DOUBLE_EQ(x["energy_granite_kinetic_initial_J"].get<double>(), 0.0);
   const double gain = x["target_kinetic_gain_J"].get<double>() + x["target_internal_gain_J"].get<double>();
   EXPECT_NEAR(x["target_share_of_impactor_energy"].get<double>(), gain / ke0, 1e-12);
+  // energy.csv's target_share column is the same share over time: 0 at t = 0, the summary's
+  // value at the end (to the 12 printed digits).
+  EXPECT_DOUBLE_EQ(rows.front()[14], 0.0);
+  EXPECT_NEAR(rows.back()[14], gain / ke0, 1e-10);
   // 40 us after a 3 km/s contact the target has taken a large share of the energy, and cannot
   // have more than all of it (energy error 2e-4).
   EXPECT_GT(gain / ke0, 0.2);

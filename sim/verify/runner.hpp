@@ -41,5 +41,12 @@ Report singleRunReport(const std::string& name, const Scene& scene, std::string 
 
 // The solid-mechanics problems (strength.cpp).
 std::vector<Problem> strengthProblems();
+// The energy-source problems (sources.cpp).
+std::vector<Problem> sourceProblems();
+
+// Runs `levels` resolutions, coarsest first: spacing x 2^(levels-1), ..., x 1 (the scene's own),
+// calling measure(scene, finished) on each; observed orders for every L1_ metric.
+Report convergenceStudy(const std::string& name, const Options& options, int defaultLevels,
+                        const std::function<void(const Scene&, Finished&)>& measure);
 
 }  // namespace ejecta::verify::detail

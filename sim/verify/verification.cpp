@@ -75,10 +75,8 @@ Finished runAt(Scene scene, double coarsen, const Options& options,
   return f;
 }
 
-// Runs `levels` resolutions, coarsest first: spacing x 2^(levels-1), ..., x 1 (the scene's own).
-template <typename Measure>
 Report convergenceStudy(const std::string& name, const Options& options, int defaultLevels,
-                        Measure&& measure) {
+                        const std::function<void(const Scene&, Finished&)>& measure) {
   const Scene scene = problemScene(name, options);
   Report report;
   report.problem = name;
@@ -342,6 +340,7 @@ const std::vector<Problem>& problems() {
   static const std::vector<Problem> all = [] {
     std::vector<Problem> out = list;
     for (const Problem& p : detail::strengthProblems()) out.push_back(p);
+    for (const Problem& p : detail::sourceProblems()) out.push_back(p);
     return out;
   }();
   return all;

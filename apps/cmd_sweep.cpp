@@ -1,0 +1,179 @@
+// `ejecta sweep SCENE --vary key=v1,v2,...`: runs the variants of a scene as separate `ejecta run`
+// processes (several at once where cores allow), then collects what each coupled into the
+// target into sweep.csv and prints it as a table (docs/coupling.md).
+#include <nlohmann/json.hpp>
+#include <omp.h>
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "apps/commands.hpp"
+#include "sim/atomic_file.hpp"
+#include "sim/scene.hpp"
+#include "sim/sweep.hpp"
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+
+namespace ejecta::app {
+
+namespace {
+
+// Summary keys reported per variant when present, in this order.
+const std::vector<std::string> kReported{
+    "target_share_of_yield",  "target_kinetic_fraction", "target_internal_fraction",
+    "explosive_share_of_yield", "target_share_of_impactor_energy", "yield_kt",
+    "depth_of_burst_m",       "scaled_depth_of_burst_m_per_kt3", "crater_depth_m",
+    "crater_apparent_diameter_m"};
+
+struct Child {
+  pid_t pid = 0;
+  std::size_t variant = 0;
+};
+
+pid_t spawnRun(const std::string& scene, const std::vector<std::string>& overrides,
+               const std::string& outDir, int threads, const fs::path& log) {
+  std::vector<std::string> args{"ejecta", "run", scene, "--out", outDir, "--threads",
+                                std::to_string(threads), "--quiet"};
+  for (const std::string& o : overrides) {
+    args.push_back("--set");
+    args.push_back(o);
+  }
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  pid_t pid = 0;
+  const int rc = posix_spawn(&pid, "/proc/self/exe", &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (rc != 0) throw std::runtime_error("sweep: cannot start 'ejecta run' (" + std::to_string(rc) + ")");
+  return pid;
+}
+
+std::string csvCell(std::string s) {
+  if (s.find_first_of(",\"") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+}  // namespace
+
+int sweepCommand(const SweepArgs& args) {
+  std::vector<SweepAxis> axes;
+  for (const std::string& v : args.vary) axes.push_back(parseSweepAxis(v));
+  const std::vector<std::vector<std::string>> variants = sweepVariants(axes);
+  // Validate every variant before running any: a bad value fails now, naming the key.
+  std::string name;
+  for (const auto& overrides : variants) {
+    std::vector<std::string> all = args.overrides;
+    all.insert(all.end(), overrides.begin(), overrides.end());
+    name = loadScene(args.scene, all).name;
+  }
+  const fs::path out = args.outDir.empty() ? fs::path("runs") / (name + "_sweep") : fs::path(args.outDir);
+  fs::create_directories(out);
+  const int cores = omp_get_num_procs();
+  const int jobs = std::clamp(args.jobs > 0 ? args.jobs : cores, 1, static_cast<int>(variants.size()));
+  const int threads = std::max(1, cores / jobs);
+  std::fprintf(stderr, "ejecta: sweep of '%s': %zu variants, %d at a time with %d thread%s each -> %s\n",
+               name.c_str(), variants.size(), jobs, threads, threads == 1 ? "" : "s", out.c_str());
+
+  std::vector<int> status(variants.size(), -1);
+  std::vector<Child> running;
+  std::size_t next = 0;
+  auto dirOf = [&](std::size_t k) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "variant_%03zu", k);
+    return out / buf;
+  };
+  while (next < variants.size() || !running.empty()) {
+    while (next < variants.size() && static_cast<int>(running.size()) < jobs) {
+      std::vector<std::string> all = args.overrides;
+      all.insert(all.end(), variants[next].begin(), variants[next].end());
+      fs::create_directories(dirOf(next));
+      running.push_back({spawnRun(args.scene, all, dirOf(next).string(), threads,
+                                  dirOf(next) / "run.log"), next});
+      ++next;
+    }
+    int wstatus = 0;
+    const pid_t done = ::wait(&wstatus);
+    if (done < 0) throw std::runtime_error("sweep: wait failed");
+    for (auto it = running.begin(); it != running.end(); ++it)
+      if (it->pid == done) {
+        status[it->variant] = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : 128;
+        std::fprintf(stderr, "ejecta: variant %zu (%s) %s\n", it->variant,
+                     variants[it->variant].front().c_str(),
+                     status[it->variant] == 0 ? "done" : "FAILED (see its run.log)");
+        running.erase(it);
+        break;
+      }
+  }
+
+  // Collect: one row per variant, the varied values and what the summary reports.
+  std::ostringstream csv;
+  csv << "variant";
+  for (const SweepAxis& a : axes) csv << ',' << csvCell(a.key);
+  csv << ",status";
+  std::vector<std::string> columns;
+  std::vector<std::map<std::string, double>> values(variants.size());
+  for (std::size_t k = 0; k < variants.size(); ++k) {
+    std::ifstream in(dirOf(k) / "summary.json");
+    if (!in) continue;
+    const nlohmann::json extras = nlohmann::json::parse(in)["extras"];
+    for (const std::string& key : kReported)
+      if (extras.contains(key) && extras[key].is_number()) values[k][key] = extras[key].get<double>();
+  }
+  for (const std::string& key : kReported)
+    for (const auto& v : values)
+      if (v.count(key)) {
+        columns.push_back(key);
+        break;
+      }
+  for (const std::string& c : columns) csv << ',' << c;
+  csv << '\n';
+  csv.precision(8);
+  std::printf("%-8s", "variant");
+  for (const SweepAxis& a : axes) std::printf("  %-24s", a.key.c_str());
+  for (const std::string& c : columns) std::printf("  %-14.14s", c.c_str());
+  std::printf("\n");
+  for (std::size_t k = 0; k < variants.size(); ++k) {
+    csv << k;
+    std::printf("%-8zu", k);
+    for (const SweepAxis& a : axes) {
+      csv << ',' << csvCell(a.values[k]);
+      std::printf("  %-24s", a.values[k].c_str());
+    }
+    csv << ',' << (status[k] == 0 ? "completed" : "failed");
+    for (const std::string& c : columns) {
+      const auto it = values[k].find(c);
+      if (it != values[k].end()) {
+        csv << ',' << it->second;
+        std::printf("  %-14.6g", it->second);
+      } else {
+        csv << ',';
+        std::printf("  %-14s", "-");
+      }
+    }
+    csv << '\n';
+    std::printf("\n");
+  }
+  writeFileAtomically(out / "sweep.csv", csv.str());
+  std::printf("ejecta: sweep table: %s\n", (out / "sweep.csv").c_str());
+  const bool allOk = std::all_of(status.begin(), status.end(), [](int s) { return s == 0; });
+  return allOk ? 0 : 2;
+}
+
+}  // namespace ejecta::app

@@ -1,0 +1,88 @@
+#include "sim/programmed_burn.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "sim/jwl.hpp"
+
+namespace ejecta {
+
+namespace {
+
+// Fraction of a spacing over which the burn fraction rises (LS-DYNA's 3/2, see the header).
+constexpr double kBurnWidthInSpacings = 1.5;
+
+using Point = std::array<double, 3>;
+
+// Distance from x to the detonation's point, or to its segment for a line initiation.
+double distanceToInitiation(const DetonationSpec& d, const Point& x, int dim) {
+  Point a = d.point, ab{}, ax{};
+  double ab2 = 0.0, t = 0.0;
+  for (int k = 0; k < dim; ++k) {
+    ab[k] = d.alongLine ? d.lineEnd[k] - a[k] : 0.0;
+    ax[k] = x[k] - a[k];
+    ab2 += ab[k] * ab[k];
+  }
+  if (ab2 > 0.0) {
+    for (int k = 0; k < dim; ++k) t += ax[k] * ab[k];
+    t = std::clamp(t / ab2, 0.0, 1.0);
+  }
+  double r2 = 0.0;
+  for (int k = 0; k < dim; ++k) r2 += (ax[k] - t * ab[k]) * (ax[k] - t * ab[k]);
+  return std::sqrt(r2);
+}
+
+}  // namespace
+
+std::vector<double> burnVelocities(const Scene& scene, const MaterialTable& materials) {
+  std::vector<double> v(materials.size(), 0.0);
+  for (const DetonationSpec& d : scene.detonations) {
+    const std::size_t m = static_cast<std::size_t>(d.material);
+    if (d.velocity > 0.0) {
+      v[m] = d.velocity;
+    } else if (const auto* jwl = dynamic_cast<const Jwl*>(materials[m].eos.get())) {
+      v[m] = jwl->params().dCJ;
+    }
+    if (!(v[m] > 0.0))
+      throw SceneError("detonation '" + d.name + "': material '" + materials[m].name +
+                       "' has no C-J velocity; give the detonation a 'velocity'");
+  }
+  return v;
+}
+
+void assignLightingTimes(const Scene& scene, const MaterialTable& materials, ParticleSet& p) {
+  if (scene.detonations.empty()) return;
+  const std::vector<double> velocity = burnVelocities(scene, materials);
+  const int dim = spatialDimension(scene.geometry);
+  p.enableBurn();
+  for (std::size_t i = 0; i < p.numReal; ++i) {
+    const std::size_t m = static_cast<std::size_t>(p.material[i]);
+    if (velocity[m] <= 0.0) continue;  // not an explosive: burnt from the start (F = 1)
+    double tL = std::numeric_limits<double>::infinity();
+    for (const DetonationSpec& d : scene.detonations) {
+      if (static_cast<std::size_t>(d.material) != m) continue;
+      const Point x{p.x[0][i], p.x[1][i], p.x[2][i]};
+      tL = std::min(tL, d.time + distanceToInitiation(d, x, dim) / velocity[m]);
+    }
+    p.lightingTime[i] = tL;
+    p.burnFraction[i] = 0.0;
+  }
+}
+
+void applyProgrammedBurn(ParticleSet& p, const std::vector<double>& velocity, double eta,
+                         double t) {
+  if (!p.hasBurn()) return;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.numReal; ++i) {
+    const double D = velocity[static_cast<std::size_t>(p.material[i])];
+    if (D <= 0.0) continue;
+    if (p.burnFraction[i] < 1.0 && t > p.lightingTime[i]) {
+      const double width = kBurnWidthInSpacings * p.h[i] / eta;
+      p.burnFraction[i] = std::max(p.burnFraction[i], std::min(1.0, (t - p.lightingTime[i]) * D / width));
+    }
+    p.P[i] *= p.burnFraction[i];
+  }
+}
+
+}  // namespace ejecta

@@ -1,0 +1,32 @@
+#pragma once
+// Programmed burn of a JWL explosive (docs/sources.md). Each explosive particle is lit when the
+// detonation front, running at the C-J velocity D from the initiation point or line, reaches it:
+//   t_L = t_init + |x - x_init| / D.
+// Its burn fraction then rises linearly to 1 while the front crosses the particle,
+//   F = min(1, (t - t_L) D / (1.5 dx)),   dx = h / eta (the particle spacing),
+// the lighting-time burn of Wilkins' HEMP and LS-DYNA's *MAT_HIGH_EXPLOSIVE_BURN (F1 = 2 (t - t_L)
+// D A_emax / (3 V_e), LS-DYNA Theory Manual, sec. 19.8: 1.5 cell widths for a cube). The JWL
+// pressure is multiplied by F; the chemical energy e0 is in the particle's internal energy from
+// t = 0, so the energy ledger counts the yield as the explosive's initial internal energy.
+#include <vector>
+
+#include "sim/materials.hpp"
+#include "sim/particles.hpp"
+#include "sim/scene.hpp"
+
+namespace ejecta {
+
+// Detonation velocity [m/s] of each material: the scene's velocity or the explosive's C-J
+// velocity for detonated materials, 0 for the others.
+std::vector<double> burnVelocities(const Scene& scene, const MaterialTable& materials);
+
+// Allocates the burn arrays and sets every explosive particle's lighting time from its initial
+// position (the earliest over the material's detonations). Does nothing for a scene without
+// detonations.
+void assignLightingTimes(const Scene& scene, const MaterialTable& materials, ParticleSet& p);
+
+// Advances the burn fractions to time t (never decreasing) and scales the pressure of the real
+// explosive particles by them. `velocity` is burnVelocities(); eta the scene's h = eta dx.
+void applyProgrammedBurn(ParticleSet& p, const std::vector<double>& velocity, double eta, double t);
+
+}  // namespace ejecta
