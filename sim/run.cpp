@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <cstdlib>
+#include <limits>
 #include <regex>
 #include <algorithm>
 #include <sstream>
@@ -15,6 +17,7 @@
 #include "sim/atomic_file.hpp"
 #include "sim/bodies.hpp"
 #include "sim/energy_ledger.hpp"
+#include "sim/gauges.hpp"
 #include "sim/kernel.hpp"
 #include "sim/snapshot.hpp"
 #include "sim/xdmf.hpp"
@@ -75,8 +78,12 @@ class RunOutputs {
   // A restart resumes from a snapshot that the log has usually run past: keep the header and
   // the rows up to `step`, so the resumed steps are not listed twice.
   void truncateEnergyLog(long step) {
+    truncateLog("energy.csv", step);
+    truncateLog("gauges.csv", step);
+  }
+  void truncateLog(const char* name, long step) {
     if (!enabled()) return;
-    const fs::path path = fs::path(options_.outDir) / "energy.csv";
+    const fs::path path = fs::path(options_.outDir) / name;
     std::ifstream in(path);
     if (!in) return;
     std::string kept, line;
@@ -108,8 +115,19 @@ class RunOutputs {
       energy_ << '\n';
     }
     energy_.precision(12);
+    if (!scene.gauges.empty()) {
+      gauges_.open(fs::path(options_.outDir) / "gauges.csv", append ? std::ios::app : std::ios::trunc);
+      if (!append) gauges_ << gaugeHeader(scene) << '\n';
+      gauges_.precision(12);
+    }
+  }
+  void logGauges(const Simulation& sim) {
+    if (!gauges_.is_open()) return;
+    gauges_ << sim.stepCount() << ',' << sim.time()
+            << gaugeRow(sim.scene(), readGauges(sim.scene(), sim.particles())) << '\n';
   }
   void logEnergy(const Simulation& sim, double e0) {
+    logGauges(sim);
     if (!energy_.is_open()) return;
     const ConservedTotals t = sim.totals();
     energy_ << sim.stepCount() << ',' << sim.time() << ',' << sim.lastDt() << ',' << t.kinetic
@@ -125,6 +143,7 @@ class RunOutputs {
   void writeSnapshot(const Simulation& sim, SnapshotInfo info) {
     if (!enabled()) return;
     energy_.flush();
+    gauges_.flush();
     const std::string name = snapshotName(info.snapshotIndex);
     info.sceneSource = sourceWithOverrides(options_);
     ejecta::writeSnapshot((fs::path(options_.outDir) / "snapshots" / name).string(),
@@ -133,11 +152,41 @@ class RunOutputs {
     writeXdmfSeries((fs::path(options_.outDir) / "snapshots.xdmf").string(), xdmf_);
   }
   void setSeries(std::vector<XdmfEntry> entries) { xdmf_ = std::move(entries); }
+  // Each gauge's peak pressure and its time, from the whole of gauges.csv (a restarted run's
+  // too), into the summary.
+  void addGaugePeaks(const Scene& scene, RunSummary& summary) {
+    if (!gauges_.is_open()) return;
+    gauges_.flush();
+    std::ifstream in(fs::path(options_.outDir) / "gauges.csv");
+    std::string line;
+    std::getline(in, line);
+    const std::size_t columnsPerGauge = 2 + static_cast<std::size_t>(spatialDimension(scene.geometry));
+    std::vector<double> peak(scene.gauges.size(), -std::numeric_limits<double>::infinity());
+    std::vector<double> when(scene.gauges.size(), 0.0);
+    while (std::getline(in, line)) {
+      std::stringstream row(line);
+      std::vector<double> cells;
+      for (std::string cell; std::getline(row, cell, ',');) cells.push_back(std::strtod(cell.c_str(), nullptr));
+      for (std::size_t g = 0; g < scene.gauges.size(); ++g) {
+        const std::size_t c = 2 + g * columnsPerGauge;
+        if (c < cells.size() && cells[c] > peak[g]) {
+          peak[g] = cells[c];
+          when[g] = cells[1];
+        }
+      }
+    }
+    for (std::size_t g = 0; g < scene.gauges.size(); ++g) {
+      if (!std::isfinite(peak[g])) continue;
+      summary.extras.push_back({"gauge_" + scene.gauges[g].name + "_peak_pressure_Pa", peak[g]});
+      summary.extras.push_back({"gauge_" + scene.gauges[g].name + "_peak_time_s", when[g]});
+    }
+  }
   void setCouplingReference(CouplingReference ref) { reference_ = std::move(ref); }
 
  private:
   const RunOptions& options_;
   std::ofstream energy_;
+  std::ofstream gauges_;
   std::size_t materials_ = 0;  // ledger columns in energy.csv (0: one material, totals only)
   bool coupling_ = false;      // energy.csv has the target_share column
   CouplingReference reference_;
@@ -283,6 +332,7 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
                                         : 0.0});
   addEnergyPartition(scene, info.initialMaterialKinetic, info.initialMaterialInternal,
                      conservedTotalsByMaterial(sim.particles(), scene.materials.size()), s);
+  outputs.addGaugePeaks(scene, s);
   if (options.onFinish) options.onFinish(sim, s);
   if (outputs.enabled())
     writeSummaryJson((fs::path(options.outDir) / "summary.json").string(), s);

@@ -2,6 +2,7 @@
 // against the schema below and converted to SI. Messages follow "FILE:LINE: key 'a.b': reason".
 #include "sim/scene.hpp"
 
+#include <cctype>
 #include <toml++/toml.h>
 
 #include <cmath>
@@ -28,7 +29,7 @@ const std::map<std::string_view, KeyList>& schemaTables() {
     return std::map<std::string_view, KeyList>{
         {"",
          {"scene", "domain", "sph", "time", "output", "fields", "crater", "materials", "bodies",
-          "energy_deposits", "detonations"}},
+          "energy_deposits", "detonations", "gauges"}},
         {"scene", {"name", "description", "dimension"}},
         {"domain", {"x", "y", "z"}},
         {"domain.x", axis},
@@ -64,6 +65,7 @@ const std::map<std::string_view, KeyList>& schemaTables() {
           "internal_energy", "velocity", "damage"}},
         {"energy_deposits[]", {"name", "energy", "body", "center", "radius", "profile", "width"}},
         {"detonations[]", {"name", "material", "point", "line_to", "time", "velocity"}},
+        {"gauges[]", {"name", "position"}},
     };
   }();
   return tables;
@@ -1051,6 +1053,27 @@ void readDetonations(const TableReader& root, Scene& scene) {
   }
 }
 
+void readGauges(const TableReader& root, Scene& scene) {
+  const std::vector<const toml::table*> list = root.tableArray("gauges");
+  const int dim = spatialDimension(scene.geometry);
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const TableReader r(root.context(), *list[i], "gauges[" + std::to_string(i) + "]", "gauges[]");
+    GaugeSpec g;
+    g.line = lineOf(*list[i]);
+    g.name = r.requireString("name");
+    checkUniqueName(r, names, g.name);
+    for (char c : g.name)
+      r.check(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-', "name",
+              "a gauge name is a CSV column prefix: letters, digits, '_' and '-' only");
+    r.require("position");
+    g.position = *r.optVector("position", Dimension::Length, dim, vectorLayout(scene.geometry));
+    if (scene.geometry == Geometry::Axisymmetric)
+      r.check(g.position[0] >= 0.0, "position", "in rz a gauge's r must be >= 0");
+    scene.gauges.push_back(std::move(g));
+  }
+}
+
 Scene validate(const toml::table& doc, const std::string& sourceName) {
   const Context ctx(sourceName, doc);
   const TableReader root(ctx, doc, "", "");
@@ -1065,6 +1088,7 @@ Scene validate(const toml::table& doc, const std::string& sourceName) {
   readBodies(root, scene);
   readDeposits(root, scene);
   readDetonations(root, scene);
+  readGauges(root, scene);
   readFields(root, scene);
   readCrater(root, scene);
   return scene;

@@ -152,6 +152,14 @@ struct DetonationSpec {
   int line = 0;                             // source line in the scene file
 };
 
+// A gauge: a fixed point whose pressure, density and velocity are written every step
+// (gauges.csv; sim/gauges.hpp).
+struct GaugeSpec {
+  std::string name;
+  std::array<double, 3> position{};
+  int line = 0;
+};
+
 struct OutputOptions {
   double snapshotInterval = 0.0;            // [s]; 0 = first and last only
   bool snapshots = true;
@@ -197,6 +205,7 @@ struct Scene {
   std::vector<BodySpec> bodies;             // earlier bodies win where shapes overlap
   std::vector<EnergyDepositSpec> deposits;
   std::vector<DetonationSpec> detonations;
+  std::vector<GaugeSpec> gauges;
   OutputOptions output;
   FieldsOutputOptions fields;
   CraterAnalysisOptions crater;
