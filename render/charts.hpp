@@ -1,0 +1,66 @@
+#pragma once
+// Charts from CSV files: line charts (linear or log axes, several series, a dashed reference
+// curve for an exact solution) and grouped bar charts, drawn by matplotlib. The script,
+// render/charts.py, is compiled into the library and run with /usr/bin/python3; a machine
+// without python3 or matplotlib simply has no charts (chartsAvailable() says so), and the CSV
+// the caller wrote is still there.
+//
+//   ChartRunner charts;
+//   if (charts.chartsAvailable()) charts.writeChart({.csv = "energy.csv", .x = "time_s",
+//       .series = {{.y = "kinetic_J", .label = "kinetic"}}, .out = "energy.png"});
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ejecta::render {
+
+enum class ChartKind { Line, Bar };
+
+struct ChartSeries {
+  std::string y{};              // column
+  std::string label{};          // legend entry (default: the column's name)
+  std::string x{};              // this series' x column (default: the chart's)
+  std::filesystem::path csv{};  // this series' file (default: the chart's)
+  bool reference = false;       // an exact or reference curve: dashed black
+  bool markers = false;         // points joined by lines
+};
+
+struct ChartSpec {
+  ChartKind kind = ChartKind::Line;
+  std::filesystem::path csv{};
+  std::string x{};  // x column; Bar: the column of category names
+  std::vector<ChartSeries> series{};
+  bool xlog = false, ylog = false;
+  std::string xlabel{}, ylabel{}, title{};  // labels with units, e.g. "t [s]"
+  std::filesystem::path out{};              // the PNG
+  int width = 900, height = 600;            // pixels
+};
+
+// The spec as the JSON charts.py reads (paths made absolute). Throws std::invalid_argument
+// naming the key for a spec that cannot work: no series, no out, no csv or x for a series, a
+// size below 50 pixels.
+std::string chartSpecJson(const ChartSpec& spec);
+
+class ChartRunner {
+ public:
+  explicit ChartRunner(std::filesystem::path python = "/usr/bin/python3");
+
+  // Whether `python` runs and imports matplotlib; asked once, then remembered.
+  bool chartsAvailable();
+  // Why not, when chartsAvailable() is false.
+  const std::string& unavailableReason();
+
+  // Draws the chart into spec.out (atomically: a temporary name, then rename). Throws
+  // std::runtime_error when charts are not available or the script fails (with its message:
+  // a missing file or column, a value that is not a number), std::invalid_argument for a
+  // spec chartSpecJson rejects.
+  void writeChart(const ChartSpec& spec);
+
+ private:
+  std::filesystem::path python_;
+  std::optional<bool> available_;
+  std::string reason_;
+};
+
+}  // namespace ejecta::render
