@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "apps/commands.hpp"
+#include "apps/run_images.hpp"
 #include "fields/run_outputs.hpp"
 #include "sim/embedded_scenes.hpp"
 #include "sim/run.hpp"
@@ -67,10 +68,18 @@ void printSummary(const RunOutcome& r, const std::string& outDir) {
                   100 * number("target_share_of_yield"), 100 * number("target_kinetic_fraction"),
                   100 * number("target_internal_fraction"), 100 * number("explosive_share_of_yield"));
   }
-  if (!outDir.empty())
-    std::printf("  outputs: %s/{summary.json, energy.csv, snapshots.xdmf, snapshots/%s%s}\n",
-                outDir.c_str(), fs::is_directory(fs::path(outDir) / "fields") ? ", fields/" : "",
-                fs::exists(fs::path(outDir) / "crater_profile.csv") ? ", crater_profile.csv" : "");
+  if (!outDir.empty()) {
+    const fs::path dir(outDir);
+    std::printf("  outputs: %s/{summary.json, energy.csv, snapshots.xdmf, snapshots/%s%s%s%s}\n",
+                outDir.c_str(), fs::is_directory(dir / "fields") ? ", fields/" : "",
+                fs::is_directory(dir / "images") ? ", images/" : "",
+                fs::exists(dir / "gauges.csv") ? ", gauges.csv" : "",
+                fs::exists(dir / "crater_profile.csv") ? ", crater_profile.csv" : "");
+    if (const SummaryValue* charts = extra("charts"))
+      std::printf("  charts: %s\n", std::get<std::string>(*charts).c_str());
+    else if (const SummaryValue* note = extra("charts_note"))
+      std::printf("  charts: %s\n", std::get<std::string>(*note).c_str());
+  }
   if (!r.ok) std::fprintf(stderr, "ejecta: run failed: %s\n", r.error.c_str());
 }
 
@@ -80,7 +89,10 @@ int runCommand(const RunArgs& args) {
   RunOptions options;
   options.threads = args.threads;
   options.progress = !args.quiet && interactive();
-  options.configure = [](const Scene& scene, RunOptions& o) { fields::addFieldOutputs(o, scene); };
+  options.configure = [](const Scene& scene, RunOptions& o) {
+    fields::addFieldOutputs(o, scene);
+    addImageOutputs(o, scene);
+  };
   if (!args.restartDir.empty()) {
     if (!args.scene.empty() || !args.overrides.empty())
       throw std::runtime_error("--restart takes the scene and overrides stored in the run; "

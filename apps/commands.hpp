@@ -54,6 +54,33 @@ struct SweepArgs {
 };
 int sweepCommand(const SweepArgs& args);
 
+struct ViewfactorArgs {
+  std::string geometry;                // GEOMETRY.toml
+  long long rays = 0;                  // --rays N (0: the file's [sampling])
+  double tolerance = 0.0;              // --tol T, absolute on view factors (0: the file's)
+  bool json = false;
+};
+int viewfactorCommand(const ViewfactorArgs& args);
+
+struct ThermalArgs {
+  std::string scene;                   // THERMAL.toml (a [thermal] study: spacecraft, approach, wall)
+  std::string from;                    // RUN_DIR (its last snapshot) or SNAPSHOT.h5
+  std::string outDir;                  // default: thermal/ next to the snapshot's run, or runs/<name>
+  bool json = false;                   // print thermal.json to stdout
+};
+int thermalCommand(const ThermalArgs& args);
+
+struct RenderArgs {
+  std::string input;                   // SNAPSHOT.h5 or RUN_DIR (its last snapshot)
+  std::string field;                   // particle field (default density)
+  std::string view;                    // auto | plane | rz | 3d
+  std::string out;                     // FILE.png (default <field>.png)
+  int size = 1024;                     // pixels
+  bool log = false;                    // log colour scale
+  std::string cut;                     // 3D: none | x | y | z (keep the <= 0 half)
+};
+int renderCommand(const RenderArgs& args);
+
 // True when stderr is a terminal and CI is not set: show progress lines.
 bool interactive();
 

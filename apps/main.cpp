@@ -58,6 +58,31 @@ int main(int argc, char** argv) {
   sweepCmd->add_option("--out,-o", sweepArgs.outDir, "Output directory (default runs/<scene name>_sweep)");
   sweepCmd->add_option("--jobs", sweepArgs.jobs, "Variants run at once (default: one per core)");
 
+  ejecta::app::ViewfactorArgs vfArgs;
+  CLI::App* vfCmd = app.add_subcommand("viewfactor", "View factors and incident flux by ray casting (docs/view_factors.md)");
+  vfCmd->add_option("geometry", vfArgs.geometry, "Geometry file (TOML)")->required();
+  auto* raysOpt = vfCmd->add_option("--rays", vfArgs.rays, "Rays per receiving patch (fixed count)");
+  vfCmd->add_option("--tol", vfArgs.tolerance, "Absolute tolerance on view factors (adaptive ray count)")
+      ->excludes(raysOpt);
+  vfCmd->add_flag("--json", vfArgs.json, "Print the report as JSON");
+
+  ejecta::app::ThermalArgs thermalArgs;
+  CLI::App* thermalCmd = app.add_subcommand("thermal", "Flux on a spacecraft's faces from hot crater material, wall temperatures and shield sizing");
+  thermalCmd->add_option("scene", thermalArgs.scene, "Thermal study (TOML)")->required();
+  thermalCmd->add_option("--from", thermalArgs.from, "Run directory or snapshot (.h5) with the hot material");
+  thermalCmd->add_option("--out,-o", thermalArgs.outDir, "Output directory");
+  thermalCmd->add_flag("--json", thermalArgs.json, "Print thermal.json");
+
+  ejecta::app::RenderArgs renderArgs;
+  CLI::App* renderCmd = app.add_subcommand("render", "Draw a snapshot's particles coloured by a field (PNG)");
+  renderCmd->add_option("input", renderArgs.input, "Snapshot (.h5) or run directory")->required();
+  renderCmd->add_option("--field,-f", renderArgs.field, "Particle field (default density)");
+  renderCmd->add_option("--view", renderArgs.view, "auto | plane | rz | 3d");
+  renderCmd->add_option("--out,-o", renderArgs.out, "Output PNG (default <field>.png)");
+  renderCmd->add_option("--size", renderArgs.size, "Image size in pixels (default 1024)");
+  renderCmd->add_flag("--log", renderArgs.log, "Logarithmic colour scale");
+  renderCmd->add_option("--cut", renderArgs.cut, "3D: none | x | y | z (keep the half below 0)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -69,6 +94,9 @@ int main(int argc, char** argv) {
     if (*fieldsCmd) return ejecta::app::fieldsCommand(fieldsArgs);
     if (*craterCmd) return ejecta::app::craterCommand(craterArgs);
     if (*sweepCmd) return ejecta::app::sweepCommand(sweepArgs);
+    if (*vfCmd) return ejecta::app::viewfactorCommand(vfArgs);
+    if (*thermalCmd) return ejecta::app::thermalCommand(thermalArgs);
+    if (*renderCmd) return ejecta::app::renderCommand(renderArgs);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ejecta: error: %s\n", e.what());
     return 1;

@@ -83,7 +83,7 @@ double couplingShare(const CouplingReference& ref, const std::vector<ConservedTo
 namespace {
 
 // Signed depth of x inside a shape: distance to its surface, positive inside, negative outside.
-double depthInside(const ShapeSpec& shape, const std::array<double, 3>& x, int dim) {
+double depthInside(const ShapeSpec& shape, const std::array<double, 3>& x, int dim, bool rz) {
   switch (shape.kind) {
     case ShapeKind::Sphere:
     case ShapeKind::Shell: {
@@ -94,7 +94,9 @@ double depthInside(const ShapeSpec& shape, const std::array<double, 3>& x, int d
     case ShapeKind::Box: {
       double inside = std::numeric_limits<double>::max(), outside2 = 0.0;
       for (int d = 0; d < dim; ++d) {
-        inside = std::min({inside, x[d] - shape.min[d], shape.max[d] - x[d]});
+        // In RZ a box reaching the axis (r = 0) has no surface there.
+        const bool axisFace = rz && d == 0 && shape.min[0] <= 0.0;
+        inside = std::min({inside, axisFace ? inside : x[d] - shape.min[d], shape.max[d] - x[d]});
         const double gap = std::max({shape.min[d] - x[d], x[d] - shape.max[d], 0.0});
         outside2 += gap * gap;
       }
@@ -137,7 +139,7 @@ std::optional<double> depthOfBurst(const Scene& scene) {
   std::optional<double> depth;
   for (const BodySpec& b : scene.bodies) {
     if (!contains(g.target, b.material)) continue;
-    const double d = depthInside(b.shape, *x, dim);
+    const double d = depthInside(b.shape, *x, dim, scene.geometry == Geometry::Axisymmetric);
     depth = depth ? std::max(*depth, d) : d;
   }
   return depth;

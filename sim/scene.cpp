@@ -29,7 +29,7 @@ const std::map<std::string_view, KeyList>& schemaTables() {
     return std::map<std::string_view, KeyList>{
         {"",
          {"scene", "domain", "sph", "time", "output", "fields", "crater", "materials", "bodies",
-          "energy_deposits", "detonations", "gauges"}},
+          "energy_deposits", "detonations", "gauges", "images"}},
         {"scene", {"name", "description", "dimension"}},
         {"domain", {"x", "y", "z"}},
         {"domain.x", axis},
@@ -66,6 +66,7 @@ const std::map<std::string_view, KeyList>& schemaTables() {
         {"energy_deposits[]", {"name", "energy", "body", "center", "radius", "profile", "width"}},
         {"detonations[]", {"name", "material", "point", "line_to", "time", "velocity"}},
         {"gauges[]", {"name", "position"}},
+        {"images", {"fields", "log", "every", "size", "cut"}},
     };
   }();
   return tables;
@@ -656,6 +657,35 @@ void readCrater(const TableReader& root, Scene& scene) {
           nonNegativeMessage(c.resolution, Dimension::Length) + "; 0 = half the median h");
 }
 
+void readImages(const TableReader& root, Scene& scene) {
+  const toml::table* t = root.optTable("images");
+  if (!t) return;
+  const TableReader r(root.context(), *t, "images", "images");
+  ImageOutputOptions& im = scene.images;
+  im.enabled = true;
+  auto checkFields = [&](const char* key, const std::vector<std::string>& names) {
+    for (const std::string& n : names)
+      r.check(findParticleScalarField(n) != nullptr, key,
+              "no particle field '" + n + "' (known: " + particleScalarFieldList() + ")");
+  };
+  if (auto f = r.optStringArray("fields")) {
+    checkFields("fields", *f);
+    r.check(!f->empty(), "fields", "give at least one field");
+    im.fields = *f;
+  }
+  if (auto l = r.optStringArray("log")) {
+    checkFields("log", *l);
+    im.log = *l;
+  }
+  im.every = static_cast<int>(r.optInteger("every").value_or(1));
+  r.check(im.every >= 1, "every", "must be at least 1");
+  im.size = static_cast<int>(r.optInteger("size").value_or(1024));
+  r.check(im.size >= 64 && im.size <= 8192, "size", "must be 64 to 8192 pixels");
+  im.cut = r.optString("cut").value_or("z");
+  r.check(im.cut == "none" || im.cut == "x" || im.cut == "y" || im.cut == "z", "cut",
+          "expected \"none\", \"x\", \"y\" or \"z\"");
+}
+
 int lineOf(const toml::node& n) { return static_cast<int>(n.source().begin.line); }
 
 // Names within one list must be unique: bodies and deposits are reported by name.
@@ -1091,6 +1121,7 @@ Scene validate(const toml::table& doc, const std::string& sourceName) {
   readGauges(root, scene);
   readFields(root, scene);
   readCrater(root, scene);
+  readImages(root, scene);
   return scene;
 }
 

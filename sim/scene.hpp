@@ -193,6 +193,17 @@ struct CraterAnalysisOptions {
   double resolution = 0.0;              // [m]; 0 = half the median smoothing length
 };
 
+// [images]: pictures of the particles at the snapshot cadence, images/<field>_NNNN.png (apps/
+// particle_images.hpp over render/), and charts of the run's CSVs at the end.
+struct ImageOutputOptions {
+  bool enabled = false;                 // the scene has an [images] table
+  std::vector<std::string> fields{"density"};  // particle fields (sim/particle_fields.hpp)
+  std::vector<std::string> log;         // fields drawn on a log scale
+  int every = 1;                        // with every Nth snapshot (and the last)
+  int size = 1024;                      // pixels (square)
+  std::string cut = "z";                // 3D: keep x, y or z <= 0; "none"
+};
+
 struct Scene {
   std::string name;
   std::string description;
@@ -209,6 +220,7 @@ struct Scene {
   OutputOptions output;
   FieldsOutputOptions fields;
   CraterAnalysisOptions crater;
+  ImageOutputOptions images;
 };
 
 // Reads and validates a scene file. `overrides` are "dotted.key=value" strings applied before
