@@ -8,4 +8,8 @@ namespace ejecta::radiation {
 // 93, 025010, 2021); exact since the 2019 SI fixed h, k_B and c: sigma = 2 pi^5 k_B^4/(15 h^3 c^2).
 inline constexpr double kStefanBoltzmann = 5.670374419e-8;
 
+// Emissivity of granite, 0.45: the seed's value (chapter 4.5, its ref. [27]); the default
+// emitter emissivity wherever the caller gives none.
+inline constexpr double kGraniteEmissivity = 0.45;
+
 }  // namespace ejecta::radiation

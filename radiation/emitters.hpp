@@ -18,9 +18,6 @@
 
 namespace ejecta::radiation {
 
-// Emissivity of granite, 0.45: the seed's value (chapter 4.5, its ref. [27]); the default for a
-// material the caller gives none for.
-inline constexpr double kGraniteEmissivity = 0.45;
 // The seed's molten-rock threshold [K] (chapter 4.5).
 inline constexpr double kMoltenRockThreshold = 1500.0;
 

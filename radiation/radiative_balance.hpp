@@ -21,11 +21,11 @@ namespace ejecta::radiation {
 // sizing) must give a thread-safe function.
 using SurfaceFlux = std::function<double(double t, double y)>;
 
-// The seed's optical choices (sec. 4.5): polished aluminium receiver, granite emitter (its refs.
-// [26], [27]). The wall materials table has sourced values; these reproduce the seed.
+// The seed's optical choices (sec. 4.5): polished aluminium receiver (its ref. [26]); its granite
+// emitter is kGraniteEmissivity (radiation/constants.hpp). The wall materials table has sourced
+// values; these reproduce the seed.
 inline constexpr double kSeedAluminiumEmissivity = 0.02;
 inline constexpr double kSeedAluminiumAbsorptivity = 0.08;
-inline constexpr double kSeedGraniteEmissivity = 0.45;
 
 // alpha * q - eps * sigma * (T^4 - T_sink^4) [W/m^2]: what a face at temperature T keeps.
 inline double netAbsorbedFlux(double incident, double absorptivity, double emissivity,

@@ -7,18 +7,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "radiation/format_number.hpp"
 #include "radiation/wall_explicit.hpp"
 #include "radiation/wall_implicit.hpp"
 
 namespace ejecta::radiation {
 
 namespace {
-
-std::string format(const char* spec, double v) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, spec, v);
-  return buf;
-}
 
 std::unique_ptr<WallSolver> makeSolver(WallScheme scheme, WallGrid grid, WallBoundaries bc,
                                        double initialTemperature) {
@@ -57,7 +52,7 @@ void validateSizingProblem(const ShieldSizingProblem& p) {
   if (p.coatingCells < 1) bad("coatingCells must be >= 1");
   const double limit = p.limit.temperatureFor(p.structure.material);
   if (!(limit > p.initialTemperature))
-    bad("the limit " + format("%.6g", limit) + " K is not above the initial temperature");
+    bad("the limit " + formatNumber("%.6g", limit) + " K is not above the initial temperature");
 }
 
 CoatingTrial evaluateCoating(const ShieldSizingProblem& p, const WallMaterial& coating,
@@ -100,7 +95,7 @@ ShieldSizing sizeCoating(const ShieldSizingProblem& p, const WallMaterial& coati
     result.coatingMelts = t.thickness > 0.0 && t.coatingPeak >= coating.meltingPoint;
     if (result.coatingMelts)
       result.note = "the coating reaches its melting point (" +
-                    format("%.1f", coating.meltingPoint) +
+                    formatNumber("%.1f", coating.meltingPoint) +
                     " K): it would ablate, which the model does not represent";
   };
   const CoatingTrial bare = evaluateCoating(p, coating, 0.0);
@@ -116,9 +111,9 @@ ShieldSizing sizeCoating(const ShieldSizingProblem& p, const WallMaterial& coati
   if (!safe.withinLimit) {
     finish(safe);
     result.feasible = false;
-    result.note = "even " + format("%.4g", p.maxThickness * 1e3) + " mm leaves the structure at " +
-                  format("%.1f", safe.structurePeak) + " K, above its limit " +
-                  format("%.1f", result.limit) + " K";
+    result.note = "even " + formatNumber("%.4g", p.maxThickness * 1e3) + " mm leaves the structure at " +
+                  formatNumber("%.1f", safe.structurePeak) + " K, above its limit " +
+                  formatNumber("%.1f", result.limit) + " K";
     return result;
   }
   // Bisection between a failing thickness (lo; 0 = bare) and a safe one.
@@ -134,7 +129,7 @@ ShieldSizing sizeCoating(const ShieldSizingProblem& p, const WallMaterial& coati
   result.feasible = true;
   finish(safe);
   if (safe.thickness <= p.minThickness)
-    result.note = "any coating thicker than " + format("%.3g", p.minThickness * 1e6) +
+    result.note = "any coating thicker than " + formatNumber("%.3g", p.minThickness * 1e6) +
                   " um works: its optical properties alone protect the structure";
   return result;
 }

@@ -8,15 +8,11 @@
 #include <string>
 #include <utility>
 
+#include "radiation/format_number.hpp"
+
 namespace ejecta::radiation {
 
 namespace {
-
-std::string format(const char* spec, double v) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, spec, v);
-  return buf;
-}
 
 // Relative slack on the stability limit: a step at exactly K = 1/2 computed in floating point
 // may land an ulp above the limit and must not be refused or split.
@@ -137,14 +133,14 @@ void ExplicitWallSolver::advance(double dt) {
                              rate > conductionRate_[static_cast<std::size_t>(i)] * (1 + kSlack);
       std::string where = "node i = " + std::to_string(i);
       if (grid_.is2D()) where += ", j = " + std::to_string(j);
-      where += " (x = " + format("%.4g", grid_.wall().position()[static_cast<std::size_t>(i)]) +
+      where += " (x = " + formatNumber("%.4g", grid_.wall().position()[static_cast<std::size_t>(i)]) +
                " m, layer " + std::to_string(layer + 1) + " '" +
                grid_.wall().layers()[layer].material.name + "')";
       throw ExplicitStabilityError(
-          "explicit wall solver: step " + format("%.6g", dt) + " s exceeds the stability limit " +
-          format("%.6g", 1.0 / rate) + " s: K = alpha dt/dx^2" +
+          "explicit wall solver: step " + formatNumber("%.6g", dt) + " s exceeds the stability limit " +
+          formatNumber("%.6g", 1.0 / rate) + " s: K = alpha dt/dx^2" +
           (grid_.is2D() ? std::string(" summed over x and y") : std::string()) +
-          (radiative ? " with the radiative term" : "") + " = " + format("%.4g", 0.5 * dt * rate) +
+          (radiative ? " with the radiative term" : "") + " = " + formatNumber("%.4g", 0.5 * dt * rate) +
           " > 1/2 at " + where +
           "; take smaller steps, StabilityPolicy::Substep, or the Crank-Nicolson solver");
     }
@@ -174,7 +170,7 @@ void ExplicitWallSolver::checkFinite() const {
   for (const double t : temperature_)
     if (!std::isfinite(t))
       throw std::runtime_error("explicit wall solver: temperatures are no longer finite at t = " +
-                               format("%.6g", time_) + " s");
+                               formatNumber("%.6g", time_) + " s");
 }
 
 }  // namespace ejecta::radiation

@@ -10,17 +10,9 @@
 #include <string>
 #include <utility>
 
+#include "radiation/format_number.hpp"
+
 namespace ejecta::radiation {
-
-namespace {
-
-std::string format(const char* spec, double v) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, spec, v);
-  return buf;
-}
-
-}  // namespace
 
 // The matrix of a step over the free nodes,
 //   A = diag(C / dt + extra) + theta * L,
@@ -239,7 +231,7 @@ void CrankNicolsonWallSolver::advance(double dt) {
   for (const double t : temperature_)
     if (!std::isfinite(t))
       throw std::runtime_error("Crank-Nicolson wall solver: temperatures are no longer finite "
-                               "at t = " + format("%.6g", time_) + " s");
+                               "at t = " + formatNumber("%.6g", time_) + " s");
 }
 
 void CrankNicolsonWallSolver::step(double dt, double theta) {
@@ -334,7 +326,7 @@ void CrankNicolsonWallSolver::step(double dt, double theta) {
     throw std::runtime_error(
         "Crank-Nicolson wall solver: the T^4 face iteration did not converge in " +
         std::to_string(options_.maxIterations) + " passes in the step to t = " +
-        format("%.6g", newTime) + " s; take smaller steps");
+        formatNumber("%.6g", newTime) + " s; take smaller steps");
   }
   faceEnergy_ += dt * ((1.0 - theta) * oldFaceFlux + theta * newFaceFlux);
   time_ = newTime;

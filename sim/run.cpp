@@ -127,7 +127,6 @@ class RunOutputs {
             << gaugeRow(sim.scene(), readGauges(sim.scene(), sim.particles())) << '\n';
   }
   void logEnergy(const Simulation& sim, double e0) {
-    logGauges(sim);
     if (!energy_.is_open()) return;
     const ConservedTotals t = sim.totals();
     energy_ << sim.stepCount() << ',' << sim.time() << ',' << sim.lastDt() << ',' << t.kinetic
@@ -273,6 +272,7 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
       outputs.setCouplingReference(couplingReference(scene, info.initialMaterialKinetic,
                                                      info.initialMaterialInternal));
       outputs.logEnergy(sim, info.initialEnergy);
+      outputs.logGauges(sim);
       if (options.observer) options.observer(sim);
       snapshot(false);
     }
@@ -284,6 +284,7 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
       sim.step(limit);
       lastWritten = false;
       outputs.logEnergy(sim, info.initialEnergy);
+      outputs.logGauges(sim);
       if (options.observer) options.observer(sim);
       progress.update(sim, wall());
       if (reached(sim.time(), info.nextOutputTime) && !reached(sim.time(), tEnd)) {

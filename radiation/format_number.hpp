@@ -1,0 +1,14 @@
+#pragma once
+// printf-style formatting of one number for error messages of the wall solvers and sizing.
+#include <cstdio>
+#include <string>
+
+namespace ejecta::radiation {
+
+inline std::string formatNumber(const char* spec, double v) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, spec, v);
+  return buf;
+}
+
+}  // namespace ejecta::radiation
