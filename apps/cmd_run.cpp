@@ -6,6 +6,7 @@
 
 #include "apps/commands.hpp"
 #include "apps/run_images.hpp"
+#include "apps/run_thermal.hpp"
 #include "fields/run_outputs.hpp"
 #include "sim/embedded_scenes.hpp"
 #include "sim/run.hpp"
@@ -68,10 +69,38 @@ void printSummary(const RunOutcome& r, const std::string& outDir) {
                   100 * number("target_share_of_yield"), 100 * number("target_kinetic_fraction"),
                   100 * number("target_internal_fraction"), 100 * number("explosive_share_of_yield"));
   }
+  auto text = [&](const char* key) -> std::string {
+    const SummaryValue* v = extra(key);
+    return v && std::holds_alternative<std::string>(*v) ? std::get<std::string>(*v) : std::string();
+  };
+  if (extra("thermal_time_s")) {
+    const auto count = [&](const char* key) {
+      const SummaryValue* v = extra(key);
+      return v && std::holds_alternative<std::int64_t>(*v) ? std::get<std::int64_t>(*v) : 0;
+    };
+    std::printf("  spacecraft: the hottest of %ld pass(es), over the rock of t = %.3g ms (%s/; %ld hot "
+                "particles -> %ld emitters)\n",
+                static_cast<long>(count("thermal_passes")), number("thermal_time_s") * 1e3,
+                text("thermal_dir").c_str(), static_cast<long>(count("thermal_hot_particles")),
+                static_cast<long>(count("thermal_emitters")));
+    std::printf("    %-8s %15s %18s %14s\n", "face", "peak flux", "steady (eq. 4.8)", "wall peak");
+    std::stringstream faces(text("thermal_faces"));
+    for (std::string face; std::getline(faces, face, ',');) {
+      const std::string k = "thermal_" + face;
+      std::printf("    %-8s %9.3g W/m^2 %16.0f K", face.c_str(), number((k + "_peak_flux_W_m2").c_str()),
+                  number((k + "_steady_K").c_str()));
+      if (extra((k + "_structure_peak_K").c_str()))
+        std::printf(" %12.0f K", number((k + "_structure_peak_K").c_str()));
+      std::printf("\n");
+    }
+    std::printf("  shield: %s\n", text("thermal_shield").c_str());
+  }
+  if (extra("thermal_note")) std::printf("  thermal: %s\n", text("thermal_note").c_str());
   if (!outDir.empty()) {
     const fs::path dir(outDir);
-    std::printf("  outputs: %s/{summary.json, energy.csv, snapshots.xdmf, snapshots/%s%s%s%s}\n",
+    std::printf("  outputs: %s/{summary.json, energy.csv, snapshots.xdmf, snapshots/%s%s%s%s%s}\n",
                 outDir.c_str(), fs::is_directory(dir / "fields") ? ", fields/" : "",
+                extra("thermal_time_s") ? ", thermal_NNNN/" : "",
                 fs::is_directory(dir / "images") ? ", images/" : "",
                 fs::exists(dir / "gauges.csv") ? ", gauges.csv" : "",
                 fs::exists(dir / "crater_profile.csv") ? ", crater_profile.csv" : "");
@@ -89,9 +118,10 @@ int runCommand(const RunArgs& args) {
   RunOptions options;
   options.threads = args.threads;
   options.progress = !args.quiet && interactive();
-  options.configure = [](const Scene& scene, RunOptions& o) {
+  options.configure = [charts = args.charts](const Scene& scene, RunOptions& o) {
     fields::addFieldOutputs(o, scene);
-    addImageOutputs(o, scene);
+    addImageOutputs(o, scene, charts);
+    addThermalOutputs(o, scene, charts);
   };
   if (!args.restartDir.empty()) {
     if (!args.scene.empty() || !args.overrides.empty())

@@ -1,16 +1,24 @@
-// `ejecta thermal STUDY.toml --from RUN_DIR|SNAPSHOT.h5 [--out DIR] [--json]`: the radiation
-// chain on a snapshot's hot material: flux on every spacecraft patch along the pass, eq. 4.8
-// face temperatures, transient walls and coating sizing (radiation/thermal_study.hpp,
-// docs/thermal.md). Writes flux.csv, wall_<patch>.csv, sizing.csv and thermal.json.
+// `ejecta thermal STUDY.toml --from RUN_DIR|SNAPSHOT.h5|GRIDS.vdb [--emitters particles|voxels]
+// [--occlude|--no-occlude] [--occluder-inset VOXELS] [--out DIR] [--json]`: the radiation chain
+// on a run's hot material: flux on every spacecraft patch along the pass, eq. 4.8 face
+// temperatures, transient walls and coating sizing (radiation/thermal_study.hpp,
+// docs/thermal.md). The hot material is the snapshot's particles (apps/snapshot_emitters.hpp) or
+// the grid file's hot voxels (apps/grid_emitters.hpp); the asteroid's surface, meshed from the
+// grid file's level set, occludes (apps/surface_occluder.hpp). Writes flux.csv,
+// wall_<patch>.csv, sizing.csv and thermal.json.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <numbers>
+#include <optional>
 #include <stdexcept>
 
 #include "apps/commands.hpp"
+#include "apps/grid_emitters.hpp"
 #include "apps/snapshot_emitters.hpp"
+#include "apps/surface_occluder.hpp"
+#include "apps/thermal_outputs.hpp"
 #include "radiation/thermal_study.hpp"
-#include "sim/atomic_file.hpp"
 #include "sim/run.hpp"
 #include "sim/snapshot.hpp"
 
@@ -20,20 +28,60 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string jsonText(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (static_cast<unsigned char>(c) >= 0x20) out += c;
-  }
-  return out + "\"";
+// Where the outputs go: RUN_DIR/thermal for a run's snapshot or grid file, else runs/<study name>.
+fs::path defaultOutDir(const fs::path& input, const std::string& name) {
+  const fs::path parent = input.parent_path();
+  if (parent.filename() == "snapshots" || parent.filename() == "fields") return parent.parent_path() / "thermal";
+  return fs::path("runs") / name;
 }
 
-// Where the outputs go: RUN_DIR/thermal for a run's snapshot, else runs/<study name>.
-fs::path defaultOutDir(const fs::path& snapshot, const std::string& name) {
-  const fs::path parent = snapshot.parent_path();
-  if (parent.filename() == "snapshots") return parent.parent_path() / "thermal";
-  return fs::path("runs") / name;
+// The spheres' total volume [m^3]: what each kind of emitter makes of the same hot material.
+double emitterVolume(const radiation::Emitters& e) {
+  double v = 0.0;
+  for (double r : e.radius) v += 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  return v;
+}
+
+bool isGridFile(const std::string& path) {
+  return fs::path(path).extension() == ".vdb" && !fs::is_directory(path);
+}
+
+// What --from, --emitters and --occlude resolve to.
+struct Inputs {
+  bool voxels = false;                   // emitters from the grid file's hot voxels
+  std::string snapshot;                  // particles: the snapshot
+  std::optional<std::string> gridFile;   // the grid file of the same output, if any
+  bool occlude = false;
+};
+
+Inputs resolveInputs(const ThermalArgs& args) {
+  if (args.emitters != "" && args.emitters != "particles" && args.emitters != "voxels")
+    throw std::runtime_error("--emitters " + args.emitters + ": expected particles or voxels");
+  if (args.occlude && args.noOcclude) throw std::runtime_error("--occlude and --no-occlude contradict each other");
+  Inputs in;
+  if (isGridFile(args.from)) {
+    if (!fs::exists(args.from)) throw std::runtime_error(args.from + ": no such grid file");
+    if (args.emitters == "particles")
+      throw std::runtime_error(args.from + ": a grid file holds no particles; --emitters particles needs a run "
+                               "directory or a snapshot");
+    in.voxels = true;
+    in.gridFile = args.from;
+  } else {
+    in.snapshot = resolveSnapshotPath(args.from);
+    in.gridFile = gridFileForSnapshot(in.snapshot);
+    in.voxels = args.emitters == "voxels";
+    if (in.voxels && !in.gridFile)
+      throw std::runtime_error(in.snapshot + ": no grid file fields/fields_NNNN.vdb was written with this "
+                               "snapshot; voxel emitters need one (a [fields] table in the scene, or "
+                               "`ejecta fields SNAPSHOT.h5 --out RUN_DIR/fields/fields_NNNN.vdb`)");
+  }
+  const bool surface = in.gridFile && gridFileHasSurface(*in.gridFile);
+  if (args.occlude && !surface)
+    throw std::runtime_error((in.gridFile ? *in.gridFile + ": no \"surface\" level set"
+                                          : in.snapshot + ": no grid file of this output") +
+                             " to occlude with (--occlude); the scene's [fields] table writes it (level_set = true)");
+  in.occlude = args.noOcclude ? false : (args.occlude || surface);
+  return in;
 }
 
 }  // namespace
@@ -41,54 +89,85 @@ fs::path defaultOutDir(const fs::path& snapshot, const std::string& name) {
 int thermalCommand(const ThermalArgs& args) {
   const radiation::ThermalStudy study = radiation::loadThermalStudy(args.scene);
   if (args.from.empty())
-    throw std::runtime_error(args.scene + ": no hot material: give --from RUN_DIR or --from SNAPSHOT.h5");
-  const std::string snapshot = resolveSnapshotPath(args.from);
-  SnapshotInfo info;
-  const ParticleSet particles = readSnapshot(snapshot, info);
+    throw std::runtime_error(args.scene + ": no hot material: give --from RUN_DIR, SNAPSHOT.h5 or GRIDS.vdb");
+  const Inputs in = resolveInputs(args);
 
-  SnapshotEmitterOptions options;
-  options.minTemperature = study.emitters.minTemperature;
-  options.defaultEmissivity = study.emitters.defaultEmissivity;
-  try {
-    for (const MaterialSpec& m : storedScene(info, snapshot).materials) options.materialNames.push_back(m.name);
-  } catch (const std::exception&) {
-    // No stored scene: the groups are "material<m>" and every material takes the default.
+  radiation::Emitters emitters;
+  std::vector<std::string> materialNames;
+  std::string sourceJson, sourceText;
+  if (in.voxels) {
+    GridEmitterOptions options;
+    options.minTemperature = study.emitters.minTemperature;
+    options.defaultEmissivity = study.emitters.defaultEmissivity;
+    options.emissivityByMaterial = study.emitters.emissivityByMaterial;
+    GridEmitterStats s;
+    emitters = emittersFromGridFile(*in.gridFile, options, &s);
+    materialNames = s.materials;
+    sourceJson = "  \"emitter_kind\": \"voxels\",\n  \"grid_file\": {\"path\": " + jsonString(*in.gridFile) +
+                 ", \"time_s\": " + jsonNumber(s.time) + ", \"geometry\": " + jsonString(s.sourceGeometry) +
+                 ", \"voxel_size_m\": " + jsonNumber(s.voxelSize) + ", \"active_voxels\": " + std::to_string(s.activeVoxels) +
+                 ", \"hot_voxels\": " + std::to_string(s.hotVoxels) + ", \"emitters\": " + std::to_string(s.emitters) +
+                 ", \"hot_volume_m3\": " + jsonNumber(s.hotVolume) + ", \"fill_weighted\": " + (s.fillWeighted ? "true" : "false") +
+                 "}";
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "grid file %s (t = %g s, %s, voxel %g m): %zu active voxels, %zu at >= %g K -> %zu voxel "
+                  "emitters (%.4g m^3%s)\n",
+                  in.gridFile->c_str(), s.time, s.sourceGeometry.c_str(), s.voxelSize, s.activeVoxels, s.hotVoxels,
+                  study.emitters.minTemperature, s.emitters, s.hotVolume,
+                  s.fillWeighted ? ", each sphere the voxel's filled fraction" : ", full voxels");
+    sourceText = line;
+  } else {
+    SnapshotInfo info;
+    const ParticleSet particles = readSnapshot(in.snapshot, info);
+    try {
+      for (const MaterialSpec& m : storedScene(info, in.snapshot).materials) materialNames.push_back(m.name);
+    } catch (const std::exception&) {
+      // No stored scene: the groups are "material<m>" and every material takes the default.
+    }
+    const SnapshotEmitterOptions options = emitterOptionsFor(study, materialNames);
+    SnapshotEmitterStats stats;
+    emitters = emittersFromParticles(particles, info.geometry, options, &stats);
+    sourceJson = particleSourceJson(in.snapshot, info.time, info.geometry, stats);
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "snapshot %s (t = %g s, %s): %zu particles, %zu at >= %g K -> %zu emitter spheres (%.4g m^3)\n",
+                  in.snapshot.c_str(), info.time, std::string(geometryName(info.geometry)).c_str(), stats.particles,
+                  stats.hot, study.emitters.minTemperature, stats.emitters, emitterVolume(emitters));
+    sourceText = line;
   }
-  for (const std::string& name : options.materialNames) {
-    const auto it = study.emitters.emissivityByMaterial.find(name);
-    options.emissivityByMaterial.push_back(it != study.emitters.emissivityByMaterial.end()
-                                               ? it->second : study.emitters.defaultEmissivity);
-  }
+  sourceJson += ",\n  \"emitter_volume_m3\": " + jsonNumber(emitterVolume(emitters));
   for (const auto& [name, eps] : study.emitters.emissivityByMaterial)
-    if (std::find(options.materialNames.begin(), options.materialNames.end(), name) == options.materialNames.end())
-      std::fprintf(stderr, "ejecta thermal: warning: %s: emissivity given for '%s', a material the snapshot lacks\n",
-                   args.scene.c_str(), name.c_str());
-  SnapshotEmitterStats stats;
-  const radiation::Emitters emitters = emittersFromParticles(particles, info.geometry, options, &stats);
+    if (std::find(materialNames.begin(), materialNames.end(), name) == materialNames.end())
+      std::fprintf(stderr, "ejecta thermal: warning: %s: emissivity given for '%s', a material the %s lacks\n",
+                   args.scene.c_str(), name.c_str(), in.voxels ? "grid file" : "snapshot");
 
-  const radiation::ThermalResult result = radiation::runThermalStudy(study, emitters);
+  radiation::TriangleMesh occluder;
+  std::string occluderText = occluderJson(nullptr, {}, {});
+  if (in.occlude) {
+    SurfaceOccluderOptions options;
+    options.insetVoxels = args.occluderInset;
+    SurfaceOccluderStats s;
+    occluder = occluderFromGridFile(*in.gridFile, options, &s);
+    occluderText = occluderJson(&*in.gridFile, options, s);
+    char line[512];
+    std::snprintf(line, sizeof line, "occluder: the surface of %s, %g m (%g voxels) inside, %zu triangles, %.4g m^2\n",
+                  in.gridFile->c_str(), s.inset, options.insetVoxels, s.triangles, s.area);
+    sourceText += line;
+  } else {
+    sourceText += "occluder: none (only the spacecraft blocks rays)\n";
+  }
 
-  const fs::path out = args.outDir.empty() ? defaultOutDir(snapshot, study.name) : fs::path(args.outDir);
-  fs::create_directories(out);
-  writeFileAtomically(out / "flux.csv", radiation::formatThermalFluxCsv(result));
-  for (const radiation::PatchThermal& p : result.patches)
-    if (p.wall) radiation::writeWallHistoryCsv(out / ("wall_" + p.patch + ".csv"), *p.wall);
-  if (!study.sizing.coatings.empty())
-    writeFileAtomically(out / "sizing.csv", radiation::formatThermalSizingCsv(result));
-  const std::string extra =
-      "  \"snapshot\": {\"path\": " + jsonText(snapshot) + ", \"time_s\": " + std::to_string(info.time) +
-      ", \"geometry\": " + jsonText(std::string(geometryName(info.geometry))) +
-      ", \"particles\": " + std::to_string(stats.particles) + ", \"hot_particles\": " + std::to_string(stats.hot) +
-      ", \"max_ring_copies\": " + std::to_string(stats.maxCopies) + "}";
-  const std::string json = radiation::formatThermalJson(result, extra);
-  writeFileAtomically(out / "thermal.json", json);
+  const radiation::ThermalResult result = radiation::runThermalStudy(study, emitters, in.occlude ? &occluder : nullptr);
+
+  const fs::path input = in.voxels ? fs::path(*in.gridFile) : fs::path(in.snapshot);
+  const fs::path out = args.outDir.empty() ? defaultOutDir(input, study.name) : fs::path(args.outDir);
+  const std::string json = writeThermalOutputs(out, study, result, sourceJson + ",\n" + occluderText);
 
   if (args.json) {
     std::fputs(json.c_str(), stdout);
   } else {
-    std::printf("snapshot %s (t = %g s, %s): %zu particles, %zu at >= %g K -> %zu emitter spheres\n",
-                snapshot.c_str(), info.time, std::string(geometryName(info.geometry)).c_str(), stats.particles,
-                stats.hot, study.emitters.minTemperature, stats.emitters);
+    std::fputs(sourceText.c_str(), stdout);
     std::fputs(radiation::formatThermalText(result).c_str(), stdout);
     std::printf("wrote %s/{flux.csv, wall_<patch>.csv%s, thermal.json}\n", out.string().c_str(),
                 study.sizing.coatings.empty() ? "" : ", sizing.csv");

@@ -13,6 +13,7 @@ struct RunArgs {
   int threads = 0;
   std::string restartDir;             // --restart RUN_DIR
   bool quiet = false;
+  bool charts = true;                 // --no-charts: CSVs only (no matplotlib start-ups)
 };
 int runCommand(const RunArgs& args);
 
@@ -64,9 +65,12 @@ int viewfactorCommand(const ViewfactorArgs& args);
 
 struct ThermalArgs {
   std::string scene;                   // THERMAL.toml (a [thermal] study: spacecraft, approach, wall)
-  std::string from;                    // RUN_DIR (its last snapshot) or SNAPSHOT.h5
+  std::string from;                    // RUN_DIR (its last snapshot), SNAPSHOT.h5 or GRIDS.vdb
   std::string outDir;                  // default: thermal/ next to the snapshot's run, or runs/<name>
   bool json = false;                   // print thermal.json to stdout
+  std::string emitters;                // particles | voxels; default particles (voxels for a .vdb)
+  bool occlude = false, noOcclude = false;  // neither: occlude when the output has a surface grid
+  double occluderInset = 1.5;          // voxels inside the surface (apps/surface_occluder.hpp)
 };
 int thermalCommand(const ThermalArgs& args);
 
@@ -80,6 +84,13 @@ struct RenderArgs {
   std::string cut;                     // 3D: none | x | y | z (keep the <= 0 half)
 };
 int renderCommand(const RenderArgs& args);
+
+struct WhippleArgs {
+  std::string shield;                  // SHIELD.toml (docs/whipple.md)
+  std::string outDir;                  // default runs/<study name>
+  bool json = false;                   // print whipple.json to stdout
+};
+int whippleCommand(const WhippleArgs& args);
 
 // True when stderr is a terminal and CI is not set: show progress lines.
 bool interactive();

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   runCmd->add_option("--threads,-j", run.threads, "OpenMP threads (default: all cores)");
   runCmd->add_option("--restart", run.restartDir, "Resume the run in RUN_DIR from its last snapshot");
   runCmd->add_flag("--quiet,-q", run.quiet, "No progress line");
+  runCmd->add_flag("!--no-charts", run.charts, "Write the CSVs but draw no charts");
 
   ejecta::app::VerifyArgs verify;
   CLI::App* verifyCmd = app.add_subcommand("verify", "Run a verification problem against its exact solution");
@@ -69,9 +70,13 @@ int main(int argc, char** argv) {
   ejecta::app::ThermalArgs thermalArgs;
   CLI::App* thermalCmd = app.add_subcommand("thermal", "Flux on a spacecraft's faces from hot crater material, wall temperatures and shield sizing");
   thermalCmd->add_option("scene", thermalArgs.scene, "Thermal study (TOML)")->required();
-  thermalCmd->add_option("--from", thermalArgs.from, "Run directory or snapshot (.h5) with the hot material");
+  thermalCmd->add_option("--from", thermalArgs.from, "Run directory, snapshot (.h5) or grid file (.vdb) with the hot material");
   thermalCmd->add_option("--out,-o", thermalArgs.outDir, "Output directory");
   thermalCmd->add_flag("--json", thermalArgs.json, "Print thermal.json");
+  thermalCmd->add_option("--emitters", thermalArgs.emitters, "particles | voxels (the output's temperature grid); default particles, voxels for a .vdb");
+  thermalCmd->add_flag("--occlude", thermalArgs.occlude, "The asteroid's surface (the grid file's level set) blocks rays (default when it exists)");
+  thermalCmd->add_flag("--no-occlude", thermalArgs.noOcclude, "Nothing but the spacecraft blocks rays");
+  thermalCmd->add_option("--occluder-inset", thermalArgs.occluderInset, "Voxels inside the surface where the occluder lies (default 1.5, 0-2)");
 
   ejecta::app::RenderArgs renderArgs;
   CLI::App* renderCmd = app.add_subcommand("render", "Draw a snapshot's particles coloured by a field (PNG)");
@@ -82,6 +87,12 @@ int main(int argc, char** argv) {
   renderCmd->add_option("--size", renderArgs.size, "Image size in pixels (default 1024)");
   renderCmd->add_flag("--log", renderArgs.log, "Logarithmic colour scale");
   renderCmd->add_option("--cut", renderArgs.cut, "3D: none | x | y | z (keep the half below 0)");
+
+  ejecta::app::WhippleArgs whippleArgs;
+  CLI::App* whippleCmd = app.add_subcommand("whipple", "Whipple-shield ballistic-limit curves and rear-wall sizing (docs/whipple.md)");
+  whippleCmd->add_option("shield", whippleArgs.shield, "Shield and threat (TOML)")->required();
+  whippleCmd->add_option("--out,-o", whippleArgs.outDir, "Output directory (default runs/<name>)");
+  whippleCmd->add_flag("--json", whippleArgs.json, "Print whipple.json");
 
   try {
     app.parse(argc, argv);
@@ -97,6 +108,7 @@ int main(int argc, char** argv) {
     if (*vfCmd) return ejecta::app::viewfactorCommand(vfArgs);
     if (*thermalCmd) return ejecta::app::thermalCommand(thermalArgs);
     if (*renderCmd) return ejecta::app::renderCommand(renderArgs);
+    if (*whippleCmd) return ejecta::app::whippleCommand(whippleArgs);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ejecta: error: %s\n", e.what());
     return 1;

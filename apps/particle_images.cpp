@@ -7,20 +7,19 @@
 
 namespace ejecta::app {
 
-void writeParticleImage(render::Renderer& renderer, const ParticleSet& p, Geometry geometry,
-                        double time, const std::string& sceneName,
-                        const ParticleImageOptions& options, const std::filesystem::path& out) {
+render::ParticleLayer particleLayer(const ParticleSet& p, Geometry geometry,
+                                    const ParticleImageOptions& options,
+                                    std::vector<double>& values) {
   const ParticleFieldInfo* info = findParticleScalarField(options.field);
   if (!info)
     throw std::invalid_argument("unknown field '" + options.field + "' (known: " +
                                 particleScalarFieldList() + ")");
   const std::size_t n = p.numReal;
-  const std::vector<double> values = particleScalarField(p, options.field);
-  const std::span<const double> x(p.x[0].data(), n), y(p.x[1].data(), n), z(p.x[2].data(), n);
+  values = particleScalarField(p, options.field);
   render::ParticleLayer layer;
-  layer.x = x;
-  layer.y = y;
-  if (spatialDimension(geometry) == 3) layer.z = z;
+  layer.x = std::span<const double>(p.x[0].data(), n);
+  layer.y = std::span<const double>(p.x[1].data(), n);
+  if (spatialDimension(geometry) == 3) layer.z = std::span<const double>(p.x[2].data(), n);
   layer.h = std::span<const double>(p.h.data(), n);
   layer.values = values;
   layer.scale.kind = options.log ? render::ScaleKind::Log : render::ScaleKind::Linear;
@@ -29,27 +28,37 @@ void writeParticleImage(render::Renderer& renderer, const ParticleSet& p, Geomet
   layer.scale.highPercentile = 99.5;
   layer.field = std::string(info->name);
   layer.units = std::string(info->units);
-  render::Scene scene;
-  scene.particles.push_back(layer);
-  scene.annotations.title = options.title.empty() ? sceneName + ": " + options.field : options.title;
-  scene.annotations.time = time;
+  return layer;
+}
+
+render::View particleView(Geometry geometry, const std::string& cut) {
   render::View view;
   if (geometry == Geometry::Axisymmetric) {
     view.kind = render::ViewKind::Axisymmetric;
   } else if (spatialDimension(geometry) == 3) {
     view.kind = render::ViewKind::Perspective;
-    if (options.cut == "x" || options.cut == "y" || options.cut == "z") {
-      render::ClipPlane cut;
-      cut.normal = {options.cut == "x" ? 1.0 : 0.0, options.cut == "y" ? 1.0 : 0.0,
-                    options.cut == "z" ? 1.0 : 0.0};
-      view.clipPlanes.push_back(cut);
-    } else if (options.cut != "none") {
-      throw std::invalid_argument("cut '" + options.cut + "': expected none, x, y or z");
+    if (cut == "x" || cut == "y" || cut == "z") {
+      render::ClipPlane plane;
+      plane.normal = {cut == "x" ? 1.0 : 0.0, cut == "y" ? 1.0 : 0.0, cut == "z" ? 1.0 : 0.0};
+      view.clipPlanes.push_back(plane);
+    } else if (cut != "none") {
+      throw std::invalid_argument("cut '" + cut + "': expected none, x, y or z");
     }
   } else {
     view.kind = render::ViewKind::Plane;
   }
-  render::writePng(out, renderer.render(scene, view).image);
+  return view;
+}
+
+void writeParticleImage(render::Renderer& renderer, const ParticleSet& p, Geometry geometry,
+                        double time, const std::string& sceneName,
+                        const ParticleImageOptions& options, const std::filesystem::path& out) {
+  std::vector<double> values;
+  render::Scene scene;
+  scene.particles.push_back(particleLayer(p, geometry, options, values));
+  scene.annotations.title = options.title.empty() ? sceneName + ": " + options.field : options.title;
+  scene.annotations.time = time;
+  render::writePng(out, renderer.render(scene, particleView(geometry, options.cut)).image);
 }
 
 }  // namespace ejecta::app

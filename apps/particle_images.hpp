@@ -1,9 +1,11 @@
 #pragma once
 // Pictures of a run's particles (render/ over sim/'s particles): the view that suits the run's
-// geometry, a field's values with its units, the time. Used by `ejecta render` and by the frames
-// `ejecta run` writes for a scene's [images] table.
+// geometry, a field's values with its units, the time. Used by `ejecta render`, by the frames
+// `ejecta run` writes for a scene's [images] table, and under the spacecraft in a thermal pass's
+// picture (apps/thermal_picture.hpp).
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "render/renderer.hpp"
 #include "sim/particles.hpp"
@@ -18,8 +20,18 @@ struct ParticleImageOptions {
   std::string title;              // default: "<scene>: <field>"
 };
 
-// Draws the particles (RZ mirrored about the axis; 3D from an automatic camera, cut in half)
-// and writes the PNG atomically. Throws std::invalid_argument for an unknown field or cut.
+// The layer of the real particles coloured by `options.field`; its values live in `values`,
+// which must outlive the layer's use. Throws std::invalid_argument for an unknown field.
+render::ParticleLayer particleLayer(const ParticleSet& p, Geometry geometry,
+                                    const ParticleImageOptions& options,
+                                    std::vector<double>& values);
+
+// The view that suits the geometry: a plane, RZ mirrored about the axis, or 3D from an automatic
+// camera cut in half. Throws std::invalid_argument for an unknown cut.
+render::View particleView(Geometry geometry, const std::string& cut);
+
+// Draws the particles and writes the PNG atomically. Throws std::invalid_argument for an
+// unknown field or cut.
 void writeParticleImage(render::Renderer& renderer, const ParticleSet& p, Geometry geometry,
                         double time, const std::string& sceneName,
                         const ParticleImageOptions& options, const std::filesystem::path& out);

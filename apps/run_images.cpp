@@ -89,7 +89,7 @@ std::vector<std::string> writeRunCharts(const fs::path& dir, const Scene& scene)
 
 }  // namespace
 
-void addImageOutputs(RunOptions& options, const Scene& scene) {
+void addImageOutputs(RunOptions& options, const Scene& scene, bool charts) {
   if (options.outDir.empty()) return;
   const fs::path dir = options.outDir;
   if (scene.images.enabled) {
@@ -117,6 +117,7 @@ void addImageOutputs(RunOptions& options, const Scene& scene) {
       }
     };
   }
+  if (!charts) return;
   auto previous = options.onFinish;
   const Scene copy = scene;
   options.onFinish = [=](const Simulation& sim, RunSummary& summary) {

@@ -7,6 +7,7 @@
 
 namespace ejecta::app {
 
-void addImageOutputs(RunOptions& options, const Scene& scene);
+// `charts` false: the CSVs only (no python start-ups), as `ejecta run --no-charts`.
+void addImageOutputs(RunOptions& options, const Scene& scene, bool charts = true);
 
 }  // namespace ejecta::app

@@ -1,5 +1,6 @@
 #include "radiation/emitters.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -96,6 +97,72 @@ Emitters selectEmitters(const EmitterSource& s, const EmitterSelection& sel) {
     out.temperature.push_back(t);
     out.emissivity.push_back(eps);
     out.group.push_back(static_cast<std::uint32_t>(groupOfMaterial[mu]));
+  }
+  return out;
+}
+
+Emitters selectVoxelEmitters(const VoxelEmitterSource& s, const EmitterSelection& sel) {
+  const std::size_t n = s.x.size();
+  auto checkLength = [n](std::size_t len, const std::string& name) {
+    if (len != n)
+      throw std::invalid_argument("voxel array " + name + " has " + std::to_string(len) +
+                                  " elements, x has " + std::to_string(n));
+  };
+  checkLength(s.y.size(), "y");
+  checkLength(s.z.size(), "z");
+  checkLength(s.temperature.size(), "temperature");
+  for (std::size_t m = 0; m < s.fraction.size(); ++m)
+    checkLength(s.fraction[m].size(), "fraction[" + std::to_string(m) + "]");
+  if (!(s.voxelVolume > 0.0) || !std::isfinite(s.voxelVolume))
+    throw std::invalid_argument("voxel volume must be > 0");
+  if (!std::isfinite(sel.minTemperature))
+    throw std::invalid_argument("emitter minimum temperature must be finite");
+  if (!(sel.defaultEmissivity > 0.0 && sel.defaultEmissivity <= 1.0))
+    throw std::invalid_argument("default emissivity must be in (0, 1]");
+  const std::size_t materials = std::max<std::size_t>(1, s.fraction.size());
+  std::vector<double> eps(materials, sel.defaultEmissivity);
+  for (std::size_t m = 0; m < sel.emissivityByMaterial.size(); ++m) {
+    if (!(sel.emissivityByMaterial[m] > 0.0 && sel.emissivityByMaterial[m] <= 1.0))
+      throw std::invalid_argument("emissivity of material " + std::to_string(m) + " must be in (0, 1]");
+    if (m < materials) eps[m] = sel.emissivityByMaterial[m];
+  }
+  std::vector<std::string> names(materials);
+  for (std::size_t m = 0; m < materials; ++m)
+    names[m] = m < sel.materialNames.size() ? sel.materialNames[m] : "material" + std::to_string(m);
+
+  Emitters out;
+  std::vector<int> groupOfMaterial(materials, -1);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = s.temperature[i];
+    if (!std::isfinite(t) || t < 0.0) badElement("temperature", i, "must be finite and >= 0");
+    if (t < sel.minTemperature) continue;
+    if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i]) || !std::isfinite(s.z[i]))
+      badElement("x", i, "(voxel centre) is not finite");
+    double total = 0.0, weighted = 0.0, largest = -1.0;
+    std::size_t dominant = 0;
+    if (s.fraction.empty()) {
+      total = 1.0;
+      weighted = eps[0];
+    }
+    for (std::size_t m = 0; m < s.fraction.size(); ++m) {
+      const double f = s.fraction[m][i];
+      if (!std::isfinite(f) || f < 0.0) badElement("fraction", i, "must be finite and >= 0");
+      total += f;
+      weighted += f * eps[m];
+      if (f > largest) largest = f, dominant = m;
+    }
+    if (!(total > 0.0)) continue;  // no material in this voxel
+    const double fill = s.fractionsAreFill && !s.fraction.empty() ? std::min(total, 1.0) : 1.0;
+    if (groupOfMaterial[dominant] < 0)
+      groupOfMaterial[dominant] = static_cast<int>(groupIndex(out.groupNames, names[dominant]));
+    out.x.push_back(s.x[i]);
+    out.y.push_back(s.y[i]);
+    out.z.push_back(s.z[i]);
+    out.radius.push_back(equalVolumeRadius(fill * s.voxelVolume));
+    out.temperature.push_back(t);
+    // The mean of values in (0, 1] is in (0, 1]; the clamp keeps rounding there.
+    out.emissivity.push_back(std::min(1.0, weighted / total));
+    out.group.push_back(static_cast<std::uint32_t>(groupOfMaterial[dominant]));
   }
   return out;
 }

@@ -64,6 +64,33 @@ struct EmitterSelection {
 // (0, 1].
 Emitters selectEmitters(const EmitterSource& source, const EmitterSelection& selection = {});
 
+// Voxels of a grid as the caller holds them (fields/grid_voxels.hpp reads them from a grid
+// file): centres, temperatures, one voxel volume, and optionally the fraction of each material
+// in each voxel.
+struct VoxelEmitterSource {
+  std::span<const double> x, y, z;
+  std::span<const double> temperature;   // [K]
+  double voxelVolume = 0.0;              // [m^3], > 0
+  // fraction[m][i]: the fraction of material m in voxel i (m indexes the selection's
+  // emissivityByMaterial and materialNames). Empty: every voxel is material 0, full.
+  std::vector<std::span<const double>> fraction;
+  // The fractions are plain SPH sums, whose total is the filled fraction S of the voxel (1
+  // inside material, 0.5 on the surface, less in the kernel's fringe beyond it): each voxel's
+  // sphere then holds S times the voxel volume (S capped at 1). False (Shepard-normalised
+  // shares, or none): every kept voxel is full.
+  bool fractionsAreFill = false;
+};
+
+// The hot voxels of `source` as emitters: each voxel with T >= selection.minTemperature (and
+// material in it) becomes an opaque grey sphere at its centre of the volume of material it holds,
+// S v, radius equalVolumeRadius(S v), as a particle is a sphere of its own volume. Its
+// emissivity is the fraction-weighted mean of its materials' emissivities (a material beyond
+// emissivityByMaterial takes the default), its group the material with the largest fraction
+// (ties: the lower index). Throws std::invalid_argument (naming the array and the voxel) for
+// arrays of different lengths, a non-finite value, a negative fraction, a voxel volume <= 0 or an
+// emissivity outside (0, 1].
+Emitters selectVoxelEmitters(const VoxelEmitterSource& source, const EmitterSelection& selection = {});
+
 // The radius of the sphere of volume v: (3 v / 4 pi)^(1/3). For an SPH particle, v = m / rho;
 // for a voxel of edge a, v = a^3 (radius 0.62 a). Spheres of that size on a cubic lattice leave
 // pinholes along the lattice axes; opaqueLatticeRadius closes them.

@@ -513,7 +513,15 @@ FaceCondition coldFace(const WallSpec& w) {
 }  // namespace
 
 ThermalResult runThermalStudy(const ThermalStudy& study, const Emitters& emitters) {
+  return runThermalStudy(study, emitters, nullptr);
+}
+
+ThermalResult runThermalStudy(const ThermalStudy& study, const Emitters& emitters,
+                              const TriangleMesh* occluder) {
+  const bool occluded = occluder && !occluder->triangles.empty();
+  if (occluded) validateMesh(*occluder, study.source + ": occluder");
   ThermalResult r;
+  r.occluderTriangles = occluded ? occluder->triangleCount() : 0;
   r.name = study.name;
   r.source = study.source;
   r.times = study.approach.times();
@@ -555,17 +563,20 @@ ThermalResult runThermalStudy(const ThermalStudy& study, const Emitters& emitter
     RadiationScene scene;
     scene.surfaces = buildRadiationScene(craft, t).surfaces;
     scene.emitters = emitters;
+    if (occluded && !emitters.empty()) scene.occluder.mesh = *occluder;  // opaque, cold (T = 0)
     const ViewFactorSolver solver(std::move(scene));
     for (std::size_t p = 0; p < r.patches.size(); ++p) {
       PatchThermal& pt = r.patches[p];
       if (emitters.empty()) {
         pt.flux.push_back({});
         pt.seedFlux.push_back(0.0);
+        if (occluded) pt.toOccluder.push_back({});
         continue;
       }
       const ReceiverResult rr = solver.fromPatch(p, study.sampling);
       r.rays += rr.rays;
       pt.flux.push_back(rr.flux);
+      if (occluded) pt.toOccluder.push_back(rr.toOccluder);
       pt.seedFlux.push_back(seedBaseline(emitters, solver.scene().surfaces, p, study.baseline).flux);
     }
   }
@@ -578,6 +589,7 @@ ThermalResult runThermalStudy(const ThermalStudy& study, const Emitters& emitter
         pt.peakFlux = pt.flux[i].value;
         pt.peakFluxError = pt.flux[i].standardError;
         pt.peakTime = r.times[i];
+        if (!pt.toOccluder.empty()) pt.peakOccluderFactor = pt.toOccluder[i].value;
       }
       pt.peakSeedFlux = std::max(pt.peakSeedFlux, pt.seedFlux[i]);
     }
@@ -692,7 +704,8 @@ std::string formatThermalSizingCsv(const ThermalResult& r) {
 std::string formatThermalJson(const ThermalResult& r, const std::string& extra) {
   std::string o = "{\n  \"name\": " + jsonString(r.name) + ",\n  \"source\": " + jsonString(r.source) + ",\n";
   if (!extra.empty()) o += extra + ",\n";
-  o += "  \"emitters\": " + std::to_string(r.emitterCount) + ",\n  \"groups\": [";
+  o += "  \"emitters\": " + std::to_string(r.emitterCount) +
+       ",\n  \"occluder_triangles\": " + std::to_string(r.occluderTriangles) + ",\n  \"groups\": [";
   for (std::size_t g = 0; g < r.groupNames.size(); ++g) o += std::string(g ? ", " : "") + jsonString(r.groupNames[g]);
   o += "],\n  \"times_s\": [";
   for (std::size_t i = 0; i < r.times.size(); ++i) o += std::string(i ? ", " : "") + num(r.times[i]);
@@ -707,6 +720,7 @@ std::string formatThermalJson(const ThermalResult& r, const std::string& extra) 
          ",\n     \"seed_baseline\": {\"peak_flux\": " + num(p.peakSeedFlux) +
          ", \"steady_temperature_K\": " + num(p.seedSteadyTemperature) + ", \"absorptivity\": " +
          num(kSeedAluminiumAbsorptivity) + ", \"emissivity\": " + num(kSeedAluminiumEmissivity) + "}";
+    if (!p.toOccluder.empty()) o += ",\n     \"occluder_view_factor_at_peak\": " + num(p.peakOccluderFactor);
     if (p.wall) {
       o += ",\n     \"wall\": {\"layers\": [";
       const auto& layers = p.wall->wall().layers();
@@ -742,7 +756,9 @@ std::string formatThermalJson(const ThermalResult& r, const std::string& extra) 
 
 std::string formatThermalText(const ThermalResult& r) {
   std::string o = "thermal study '" + r.name + "' (" + r.source + "): " + std::to_string(r.emitterCount) +
-                  " emitters, " + std::to_string(r.times.size()) + " flux samples over " +
+                  " emitters, " +
+                  (r.occluderTriangles ? "an occluder of " + std::to_string(r.occluderTriangles) + " triangles, " : "") +
+                  std::to_string(r.times.size()) + " flux samples over " +
                   num(r.times.back()) + " s, " + std::to_string(r.rays) + " rays in " + num(r.raySeconds) + " s\n";
   char line[512];
   std::snprintf(line, sizeof line, "%-10s %10s %12s %10s %11s %12s %11s %9s\n", "patch", "area m2",

@@ -2,8 +2,9 @@
 // The whole radiation chain for one spacecraft pass (docs/thermal.md): a study file names the
 // spacecraft, its approach trajectory, how hot material is selected and how bright it is, the
 // wall of every face, the structural limit and the candidate coatings. Given the hot material as
-// plain emitter arrays (the caller reads them from a snapshot: apps/snapshot_emitters.hpp), the
-// chain
+// plain emitter arrays (the caller reads them from a snapshot, apps/snapshot_emitters.hpp, or a
+// grid file, apps/grid_emitters.hpp) and optionally an occluder (the asteroid's surface:
+// apps/surface_occluder.hpp), the chain
 //   1. moves the spacecraft along the trajectory and ray-casts the incident flux on every patch
 //      at each sample time, with its standard error (view_factors.hpp);
 //   2. turns the peak flux into the steady face temperature of the seed's eq. 4.8
@@ -117,12 +118,17 @@ struct PatchThermal {
   double structureLimit = 0.0;         // [K]
   bool structureWithinLimit = true;
   std::vector<ShieldSizing> sizing;    // per candidate coating (when sized)
+  // With an occluder: the view factor from the patch to it at each sample time (what the
+  // asteroid's surface fills of the face's view), and at the peak-flux sample.
+  std::vector<Estimate> toOccluder;
+  double peakOccluderFactor = 0.0;
 };
 
 struct ThermalResult {
   std::string name, source;
   std::vector<double> times;           // flux sample times [s]
   std::size_t emitterCount = 0;
+  std::size_t occluderTriangles = 0;   // 0: nothing but the spacecraft itself blocks rays
   std::vector<std::string> groupNames;
   std::uint64_t rays = 0;              // rays cast in all
   double raySeconds = 0.0, wallSeconds = 0.0, sizingSeconds = 0.0;
@@ -134,6 +140,12 @@ struct ThermalResult {
 // The whole chain on the given emitters (static during the pass). An empty emitter set gives
 // zero flux everywhere. Throws ThermalStudyError for a wall or sizing patch the spacecraft lacks.
 ThermalResult runThermalStudy(const ThermalStudy& study, const Emitters& emitters);
+// The same with an occluder (nullptr or empty: none): an opaque triangle mesh, static during the
+// pass like the emitters, that neither emits nor receives: the asteroid's surface (a meshed
+// level set, apps/surface_occluder.hpp). A ray from a patch that meets it before an emitter is
+// blocked. Throws MeshError for a malformed mesh.
+ThermalResult runThermalStudy(const ThermalStudy& study, const Emitters& emitters,
+                              const TriangleMesh* occluder);
 
 // Outputs, as text (the caller writes them): the flux table "time_s,<patch>,<patch>_se,..."; the
 // sizing table; the summary as JSON (docs/thermal.md lists the fields).

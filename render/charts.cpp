@@ -148,10 +148,12 @@ const std::string& ChartRunner::unavailableReason() {
 }
 
 void ChartRunner::writeChart(const ChartSpec& spec) {
-  const std::string json = chartSpecJson(spec);
+  writeChartJson(chartSpecJson(spec), spec.out.string());
+}
+
+void ChartRunner::writeChartJson(const std::string& json, const std::string& out) {
   if (!chartsAvailable())
-    throw std::runtime_error("cannot draw '" + spec.out.string() +
-                             "': charts are not available: " + reason_);
+    throw std::runtime_error("cannot draw '" + out + "': charts are not available: " + reason_);
   TemporaryDirectory directory;
   const fs::path script = directory.path() / "charts.py";
   const fs::path specFile = directory.path() / "chart.json";
@@ -160,7 +162,7 @@ void ChartRunner::writeChart(const ChartSpec& spec) {
   const ProcessResult r =
       runProcess({python_.string(), script.string(), "--spec", specFile.string()});
   if (r.exitCode != 0)
-    throw std::runtime_error("cannot draw '" + spec.out.string() +
+    throw std::runtime_error("cannot draw '" + out +
                              "': " + (r.output.empty() ? "the chart script failed" : r.output));
 }
 

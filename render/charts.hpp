@@ -56,6 +56,9 @@ class ChartRunner {
   // a missing file or column, a value that is not a number), std::invalid_argument for a
   // spec chartSpecJson rejects.
   void writeChart(const ChartSpec& spec);
+  // The same for a spec already in charts.py's JSON (its other kinds, e.g. "ble" for
+  // `ejecta whipple`); `out` names the PNG in messages.
+  void writeChartJson(const std::string& json, const std::string& out);
 
  private:
   std::filesystem::path python_;

@@ -16,6 +16,13 @@ A spec file is JSON:
               {"csv": "other.csv", "x": "n", "y": "error", "markers": true}],
    "xlog": false, "ylog": false, "xlabel": "t [s]", "ylabel": "E [J]", "title": "...",
    "out": "energy.png", "width": 900, "height": 600}
+A "ble" spec draws ballistic-limit curves of Whipple shields from the long-format CSV that
+`ejecta whipple` writes (one row per rear wall and speed; docs/whipple.md):
+  {"kind": "ble", "csv": "ble.csv", "out": "ble.png", "title": "...",
+   "threat": {"speed_m_s": 10000, "diameter_m": 0.005}}
+one line per wall_thickness_m (speed in km/s, critical diameter in mm), the regime boundaries
+found in the regime column as dotted lines, and the threat, if given, as a marker. The column
+names may be changed with "group", "x", "y" and "regime".
 A series may name its own csv and x column. "reference": a dashed black line (an exact
 solution). "markers": points joined by lines (a convergence study). For "bar" charts the x column
 holds the category names and each series is one bar per category.
@@ -88,8 +95,11 @@ def draw(spec, base):
     import matplotlib.pyplot as plt
 
     kind = spec.get("kind", "line")
+    if kind == "ble":
+        draw_ble(spec, base)
+        return
     if kind not in ("line", "bar"):
-        fail("kind must be 'line' or 'bar', not '%s'" % kind)
+        fail("kind must be 'line', 'bar' or 'ble', not '%s'" % kind)
     series = spec.get("series") or []
     if not series:
         fail("the spec has no series")
@@ -149,6 +159,12 @@ def draw(spec, base):
     if len(series) > 1 or any(entry.get("label") for entry in series):
         axes.legend()
     figure.tight_layout()
+    save_figure(figure, out, base, dpi)
+
+
+def save_figure(figure, out, base, dpi):
+    """Writes the PNG to a temporary name next to `out`, then renames it."""
+    import matplotlib.pyplot as plt
 
     out = out if os.path.isabs(out) else os.path.join(base, out)
     directory = os.path.dirname(os.path.abspath(out))
@@ -162,6 +178,74 @@ def draw(spec, base):
         if os.path.exists(temporary):
             os.remove(temporary)
     plt.close(figure)
+
+
+def regime_corners(speeds, regimes):
+    """(speed, regime on the right) wherever the regime changes along a curve. ejecta's curves
+    carry the corner speeds as rows: the last ballistic row and the first hypervelocity row."""
+    corners = []
+    for i in range(1, len(speeds)):
+        if regimes[i] != regimes[i - 1]:
+            at = speeds[i - 1] if regimes[i - 1] == "ballistic" else speeds[i]
+            corners.append((at, regimes[i]))
+    return corners
+
+
+def draw_ble(spec, base):
+    """Ballistic-limit curves: critical diameter [mm] against speed [km/s], one per rear wall."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    out = spec.get("out")
+    if not out:
+        fail("the spec has no 'out' file")
+    path = spec.get("csv")
+    width, height = int(spec.get("width", 900)), int(spec.get("height", 600))
+    if width < 50 or height < 50:
+        fail("width and height must be at least 50 pixels")
+    tables = Tables(base)
+    groups = tables.column(path, spec.get("group", "wall_thickness_m"))
+    speeds = tables.column(path, spec.get("x", "speed_m_s"))
+    diameters = tables.column(path, spec.get("y", "critical_diameter_m"))
+    regimes = tables.column(path, spec.get("regime", "regime"), numeric=False)
+    if not speeds:
+        fail("'%s' has no rows" % path)
+    curves = {}
+    for group, speed, diameter, regime in zip(groups, speeds, diameters, regimes):
+        curves.setdefault(group, ([], [], []))
+        curves[group][0].append(speed * 1e-3)
+        curves[group][1].append(diameter * 1e3)
+        curves[group][2].append(regime)
+    dpi = 100
+    figure, axes = plt.subplots(figsize=(width / dpi, height / dpi), dpi=dpi)
+    for group, (x, y, _) in curves.items():
+        axes.plot(x, y, "-", linewidth=1.8, label="t_w = %.3g mm" % (group * 1e3))
+    first = next(iter(curves.values()))
+    edges = [min(first[0])] + [at for at, _ in regime_corners(first[0], first[2])] + [max(first[0])]
+    names = [first[2][0]] + [name for _, name in regime_corners(first[0], first[2])]
+    for at in edges[1:-1]:
+        axes.axvline(at, color="0.4", linestyle=":", linewidth=1.2)
+    for left, right, name in zip(edges[:-1], edges[1:], names):
+        axes.text((left + right) / 2, 0.02, name, transform=axes.get_xaxis_transform(), ha="center",
+                  va="bottom", fontsize=9, color="0.3")
+    threat = spec.get("threat")
+    if threat:
+        try:
+            tx, ty = float(threat["speed_m_s"]) * 1e-3, float(threat["diameter_m"]) * 1e3
+        except (KeyError, TypeError, ValueError):
+            fail("'threat' needs numbers 'speed_m_s' and 'diameter_m'")
+        axes.plot([tx], [ty], "kx", markersize=10, markeredgewidth=2,
+                  label="threat %.3g mm at %.3g km/s" % (ty, tx), zorder=4)
+    axes.set_ylim(bottom=0.0)
+    axes.set_xlabel(spec.get("xlabel") or "impact speed [km/s]")
+    axes.set_ylabel(spec.get("ylabel") or "critical projectile diameter [mm]")
+    if spec.get("title"):
+        axes.set_title(spec["title"])
+    axes.grid(True, which="major", alpha=0.3)
+    axes.legend()
+    figure.tight_layout()
+    save_figure(figure, out, base, dpi)
 
 
 def spec_from_options(options):

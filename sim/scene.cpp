@@ -29,7 +29,7 @@ const std::map<std::string_view, KeyList>& schemaTables() {
     return std::map<std::string_view, KeyList>{
         {"",
          {"scene", "domain", "sph", "time", "output", "fields", "crater", "materials", "bodies",
-          "energy_deposits", "detonations", "gauges", "images"}},
+          "energy_deposits", "detonations", "gauges", "images", "thermal"}},
         {"scene", {"name", "description", "dimension"}},
         {"domain", {"x", "y", "z"}},
         {"domain.x", axis},
@@ -67,6 +67,7 @@ const std::map<std::string_view, KeyList>& schemaTables() {
         {"detonations[]", {"name", "material", "point", "line_to", "time", "velocity"}},
         {"gauges[]", {"name", "position"}},
         {"images", {"fields", "log", "every", "size", "cut"}},
+        {"thermal", {"study", "times"}},
     };
   }();
   return tables;
@@ -688,6 +689,28 @@ void readImages(const TableReader& root, Scene& scene) {
 
 int lineOf(const toml::node& n) { return static_cast<int>(n.source().begin.line); }
 
+void readThermal(const TableReader& root, Scene& scene) {
+  const toml::table* t = root.optTable("thermal");
+  if (!t) return;
+  const TableReader r(root.context(), *t, "thermal", "thermal");
+  ThermalOutputOptions& th = scene.thermal;
+  th.enabled = true;
+  th.line = lineOf(*t);
+  th.study = r.requireString("study");
+  r.check(!th.study.empty(), "study", "must name a study file");
+  if (const toml::node* n = t->get("times")) {
+    const toml::array* arr = n->as_array();
+    r.check(arr != nullptr, "times", "expected an array of times, e.g. [\"1 ms\", \"3 ms\"]");
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      const double time = r.quantityOf(*arr->get(i), "thermal.times[" + std::to_string(i) + "]",
+                                       Dimension::Time);
+      r.check(time >= 0.0, "times", "times must not be negative");
+      r.check(th.times.empty() || time > th.times.back(), "times", "times must increase");
+      th.times.push_back(time);
+    }
+  }
+}
+
 // Names within one list must be unique: bodies and deposits are reported by name.
 void checkUniqueName(const TableReader& r, std::set<std::string>& seen, const std::string& name) {
   r.check(!name.empty(), "name", "must not be empty");
@@ -1122,6 +1145,7 @@ Scene validate(const toml::table& doc, const std::string& sourceName) {
   readFields(root, scene);
   readCrater(root, scene);
   readImages(root, scene);
+  readThermal(root, scene);
   return scene;
 }
 

@@ -204,6 +204,19 @@ struct ImageOutputOptions {
   std::string cut = "z";                // 3D: keep x, y or z <= 0; "none"
 };
 
+// [thermal]: the radiation chain (radiation/thermal_study.hpp) run in-situ on the particles at
+// chosen output times: the flux on the spacecraft's faces along its pass, their temperatures and
+// the shield sizing, written to thermal_NNNN/ (apps/run_thermal.hpp, docs/thermal.md).
+struct ThermalOutputOptions {
+  bool enabled = false;                 // the scene has a [thermal] table
+  // The study file: a path relative to the scene file's folder, or the name of a study compiled
+  // in with the scenes ("thermal/follower"), which is how the embedded default scene names it.
+  std::string study;
+  // Run at the first output at or after each of these times [s]; empty: at the last output.
+  std::vector<double> times;
+  int line = 0;                         // where [thermal] is, for messages
+};
+
 struct Scene {
   std::string name;
   std::string description;
@@ -221,6 +234,7 @@ struct Scene {
   FieldsOutputOptions fields;
   CraterAnalysisOptions crater;
   ImageOutputOptions images;
+  ThermalOutputOptions thermal;
 };
 
 // Reads and validates a scene file. `overrides` are "dotted.key=value" strings applied before

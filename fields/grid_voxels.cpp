@@ -1,0 +1,119 @@
+// Hot voxels of a grid file: one pass over the active values of a fog grid, with the fraction
+// grids looked up at the kept voxels. The one translation unit of the reader that includes
+// OpenVDB.
+#include "fields/grid_voxels.hpp"
+
+#include <openvdb/openvdb.h>
+#include <openvdb/tools/Interpolation.h>
+
+#include <cmath>
+#include <filesystem>
+#include <mutex>
+#include <stdexcept>
+
+namespace ejecta::fields {
+
+namespace {
+
+std::string metaString(const openvdb::GridBase& g, const std::string& key) {
+  const auto p = g.getMetadata<openvdb::StringMetadata>(key);
+  return p ? p->value() : std::string();
+}
+
+openvdb::FloatGrid::Ptr readFloat(openvdb::io::File& file, const std::string& path, const std::string& name) {
+  auto grid = openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid(name));
+  if (!grid) throw std::runtime_error(path + ": grid '" + name + "' is not a float grid");
+  return grid;
+}
+
+// The value of `g` at index coordinate c of `reference`'s lattice: exact when both share the
+// transform (ejecta writes every grid of a file on one lattice), else trilinear in world space.
+class LatticeLookup {
+ public:
+  LatticeLookup(const openvdb::FloatGrid& g, const openvdb::FloatGrid& reference)
+      : same_(g.transform() == reference.transform()), accessor_(g.getConstAccessor()),
+        sampler_(g.constTree(), g.transform()), reference_(reference) {}
+  double operator()(const openvdb::Coord& c) {
+    if (same_) return accessor_.isValueOn(c) ? static_cast<double>(accessor_.getValue(c)) : 0.0;
+    return sampler_.wsSample(reference_.indexToWorld(c));
+  }
+
+ private:
+  bool same_;
+  openvdb::FloatGrid::ConstAccessor accessor_;
+  openvdb::tools::GridSampler<openvdb::FloatTree, openvdb::tools::BoxSampler> sampler_;
+  const openvdb::FloatGrid& reference_;
+};
+
+}  // namespace
+
+GridVoxels readGridVoxels(const std::string& path, const GridVoxelOptions& options) {
+  if (!std::isfinite(options.threshold))
+    throw std::invalid_argument(path + ": the voxel threshold must be finite");
+  static std::once_flag once;
+  std::call_once(once, [] { openvdb::initialize(); });
+  if (!std::filesystem::exists(path)) throw std::runtime_error(path + ": no such grid file");
+  openvdb::io::File file(path);
+  try {
+    file.open();
+  } catch (const openvdb::Exception& e) {
+    throw std::runtime_error(path + ": not a readable OpenVDB file (" + e.what() + ")");
+  }
+  std::vector<std::string> names;
+  for (auto it = file.beginName(); it != file.endName(); ++it) names.push_back(*it);
+  if (!file.hasGrid(options.grid)) {
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+    throw std::runtime_error(path + ": no grid named '" + options.grid + "' (the file has: " + list + ")");
+  }
+  const openvdb::FloatGrid::Ptr grid = readFloat(file, path, options.grid);
+  if (!grid->transform().isLinear() || !grid->hasUniformVoxels())
+    throw std::runtime_error(path + ": grid '" + options.grid + "' does not have cubic voxels on a linear transform");
+
+  GridVoxels out;
+  out.grid = options.grid;
+  out.units = metaString(*grid, "units");
+  out.sourceGeometry = metaString(*grid, "source_geometry");
+  if (const auto t = grid->getMetadata<openvdb::DoubleMetadata>("time")) out.time = t->value();
+  out.voxelSize = grid->voxelSize()[0];
+  out.voxelVolume = out.voxelSize * out.voxelSize * out.voxelSize;
+  out.activeVoxels = static_cast<std::size_t>(grid->activeVoxelCount());
+
+  std::vector<openvdb::Coord> kept;
+  auto keep = [&](const openvdb::Coord& c, float v) {
+    if (!(static_cast<double>(v) >= options.threshold)) return;
+    const openvdb::Vec3d w = grid->indexToWorld(c);
+    out.x.push_back(w[0]);
+    out.y.push_back(w[1]);
+    out.z.push_back(w[2]);
+    out.value.push_back(v);
+    kept.push_back(c);
+  };
+  for (auto it = grid->cbeginValueOn(); it; ++it) {
+    if (it.isVoxelValue()) {
+      keep(it.getCoord(), *it);
+    } else {  // an active tile: all its voxels share the value
+      const openvdb::CoordBBox box = it.getBoundingBox();
+      for (auto c = box.begin(); c; ++c) keep(*c, *it);
+    }
+  }
+
+  if (options.fractions) {
+    out.fractionsArePlainSums = true;
+    for (const std::string& name : names) {
+      if (name.rfind("fraction_", 0) != 0 || name.size() == 9) continue;
+      const openvdb::FloatGrid::Ptr f = readFloat(file, path, name);
+      out.materials.push_back(name.substr(9));
+      if (metaString(*f, "normalisation") != "none") out.fractionsArePlainSums = false;
+      LatticeLookup lookup(*f, *grid);
+      std::vector<double> values(kept.size());
+      for (std::size_t i = 0; i < kept.size(); ++i) values[i] = lookup(kept[i]);
+      out.fraction.push_back(std::move(values));
+    }
+    if (out.materials.empty()) out.fractionsArePlainSums = false;
+  }
+  file.close();
+  return out;
+}
+
+}  // namespace ejecta::fields

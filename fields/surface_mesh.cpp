@@ -1,0 +1,135 @@
+// Level set -> triangles with OpenVDB's volumeToMesh. The one translation unit of the surface
+// mesher that includes OpenVDB.
+#include "fields/surface_mesh.hpp"
+
+#include <openvdb/openvdb.h>
+#include <openvdb/tools/VolumeToMesh.h>
+
+#include <cmath>
+#include <filesystem>
+#include <mutex>
+#include <stdexcept>
+
+namespace ejecta::fields {
+
+namespace {
+
+using Vec3 = std::array<double, 3>;
+
+Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+
+void initialiseOpenVdb() {
+  static std::once_flag once;
+  std::call_once(once, [] { openvdb::initialize(); });
+}
+
+openvdb::FloatGrid::Ptr readLevelSet(const std::string& path, const std::string& name) {
+  initialiseOpenVdb();
+  if (!std::filesystem::exists(path)) throw std::runtime_error(path + ": no such grid file");
+  openvdb::io::File file(path);
+  try {
+    file.open();
+  } catch (const openvdb::Exception& e) {
+    throw std::runtime_error(path + ": not a readable OpenVDB file (" + e.what() + ")");
+  }
+  if (!file.hasGrid(name)) {
+    std::string names;
+    for (auto it = file.beginName(); it != file.endName(); ++it) names += (names.empty() ? "" : ", ") + *it;
+    throw std::runtime_error(path + ": no grid named '" + name + "' (the file has: " + names + ")");
+  }
+  auto grid = openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid(name));
+  file.close();
+  if (!grid) throw std::runtime_error(path + ": grid '" + name + "' is not a float grid");
+  if (grid->getGridClass() != openvdb::GRID_LEVEL_SET)
+    throw std::runtime_error(path + ": grid '" + name + "' is not a level set (class '" +
+                             openvdb::GridBase::gridClassToString(grid->getGridClass()) + "')");
+  return grid;
+}
+
+}  // namespace
+
+double SurfaceMesh::area() const {
+  double a = 0.0;
+  for (const auto& t : triangles)
+    a += 0.5 * norm(cross(sub(vertices[t[1]], vertices[t[0]]), sub(vertices[t[2]], vertices[t[0]])));
+  return a;
+}
+
+double SurfaceMesh::enclosedVolume() const {
+  // Sum of the signed tetrahedra (origin, v0, v1, v2); relative to the first vertex, so that a
+  // mesh far from the origin does not lose digits.
+  if (vertices.empty()) return 0.0;
+  const Vec3& o = vertices.front();
+  double v = 0.0;
+  for (const auto& t : triangles)
+    v += dot(sub(vertices[t[0]], o), cross(sub(vertices[t[1]], o), sub(vertices[t[2]], o)));
+  return v / 6.0;
+}
+
+SurfaceMesh meshSurfaceFile(const std::string& path, const SurfaceMeshOptions& options) {
+  if (!(options.adaptivity >= 0.0 && options.adaptivity <= 1.0))
+    throw std::invalid_argument(path + ": surface mesh adaptivity must be in [0, 1]");
+  if (!std::isfinite(options.isovalue))
+    throw std::invalid_argument(path + ": surface mesh isovalue must be finite");
+  const openvdb::FloatGrid::Ptr grid = readLevelSet(path, options.grid);
+  SurfaceMesh mesh;
+  mesh.voxelSize = grid->voxelSize()[0];
+  // The narrow band's half width is the background value (world units for ejecta's level sets).
+  const double band = std::abs(static_cast<double>(grid->background()));
+  if (std::abs(options.isovalue) > band - mesh.voxelSize)
+    throw std::invalid_argument(path + ": isovalue " + std::to_string(options.isovalue) + " m of grid '" +
+                                options.grid + "' lies outside its narrow band (half width " +
+                                std::to_string(band) + " m, less one voxel " + std::to_string(mesh.voxelSize) +
+                                " m, is the most it can be)");
+
+  std::vector<openvdb::Vec3s> points;
+  std::vector<openvdb::Vec3I> triangles;
+  std::vector<openvdb::Vec4I> quads;
+  openvdb::tools::volumeToMesh(*grid, points, triangles, quads, options.isovalue, options.adaptivity);
+  if (points.size() > UINT32_MAX) throw std::runtime_error(path + ": surface mesh too large for 32-bit indices");
+
+  mesh.vertices.reserve(points.size());
+  for (const openvdb::Vec3s& p : points) mesh.vertices.push_back({p[0], p[1], p[2]});
+  mesh.quads = quads.size();
+  mesh.triangles.reserve(triangles.size() + 2 * quads.size());
+  // volumeToMesh winds its polygons clockwise seen from outside (the right-hand normal points
+  // into the negative, inside region): reversed here, so the mesh follows the radiation code's
+  // convention (counter-clockwise from the front). The sphere test checks the sign.
+  for (const openvdb::Vec3I& t : triangles) mesh.triangles.push_back({t[0], t[2], t[1]});
+  for (const openvdb::Vec4I& q : quads) {
+    // Split along the shorter diagonal: better-shaped triangles on a curved surface.
+    const double d02 = norm(sub(mesh.vertices[q[0]], mesh.vertices[q[2]]));
+    const double d13 = norm(sub(mesh.vertices[q[1]], mesh.vertices[q[3]]));
+    if (d02 <= d13) {
+      mesh.triangles.push_back({q[0], q[2], q[1]});
+      mesh.triangles.push_back({q[0], q[3], q[2]});
+    } else {
+      mesh.triangles.push_back({q[0], q[3], q[1]});
+      mesh.triangles.push_back({q[1], q[3], q[2]});
+    }
+  }
+  return mesh;
+}
+
+std::optional<double> gridVoxelSize(const std::string& path, const std::string& grid) {
+  initialiseOpenVdb();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
+  try {
+    openvdb::io::File file(path);
+    file.open();
+    if (!file.hasGrid(grid)) return std::nullopt;
+    const double voxel = file.readGridMetadata(grid)->voxelSize()[0];
+    file.close();
+    return voxel;
+  } catch (const openvdb::Exception&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace ejecta::fields

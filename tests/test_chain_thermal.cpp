@@ -1,0 +1,178 @@
+// The whole chain through the command line: `ejecta run` on a small RZ impact whose scene has a
+// [thermal] table runs the radiation study in-situ at two output times, with the asteroid's
+// surface from the output's grid file as occluder, and `ejecta thermal` on the run's snapshot of
+// the same time gives the same flux (both paths build the same emitters from the same particles
+// and the same occluder from the same grid file). Also the physics a pass must show (the face looking at
+// the crater sees the most; eq. 4.8 holds between a face's flux and its temperature), the
+// summary's fields, and clear errors for a [thermal] the run cannot serve.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "radiation/constants.hpp"
+#include "support/tiny_impact.hpp"
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+namespace {
+
+const std::string kEjecta = std::string(EJECTA_BINARY_DIR) + "/apps/ejecta";
+
+// A 0.1 m box coming down the axis towards the crater of the tiny impact (its target's top at
+// y = 0; the RZ axis is the world y axis), 0.3 m to 0.15 m above it. The tiny impact at 3 km/s
+// heats the crater floor to about 1e3 K, so the study's threshold is lowered to 500 K to have
+// emitters; fixed ray counts keep it fast and deterministic.
+const char* kStudy = R"(
+[study]
+name = "small_follower"
+[spacecraft]
+shape = "box"
+size = [0.1, 0.1, 0.1]
+[approach]
+target = [0.0, 0.0, 0.0]
+distance = "0.3 m"
+direction = [0.0, 1.0, 0.0]
+speed = "150 m/s"
+duration = "1 ms"
+samples = 3
+[emitters]
+min_temperature = 500.0
+[[walls]]
+layers = [{ material = "aluminium", thickness = "1 mm", cells = 10 }]
+[sizing]
+coatings = ["tungsten"]
+patches = ["side0"]
+[sampling]
+rays = 65536
+)";
+
+std::string readFile(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void writeFile(const fs::path& p, const std::string& text) {
+  std::ofstream out(p);
+  out << text;
+}
+
+// Runs a command, returns its exit status and output (stdout and stderr).
+int run(const std::string& command, std::string& output) {
+  output.clear();
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  if (!pipe) return -1;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
+  const int status = pclose(pipe);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+const Json* patch(const Json& thermal, const std::string& name) {
+  for (const Json& p : thermal["patches"])
+    if (p["patch"] == name) return &p;
+  return nullptr;
+}
+
+// One run serves every check: a run takes ~10 s, and CTest starts each test in its own process.
+TEST(ChainThermal, InSituPassesMatchTheCommandAndThePhysics) {
+  const fs::path dir = fs::temp_directory_path() / ("ejecta_chain_thermal_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  writeFile(dir / "small_follower.toml", kStudy);
+  ejecta::test::TinyImpact o;
+  // Grids at every output: the asteroid's surface (their level set) occludes in both paths.
+  o.extra = "[fields]\ngrids = [\"density\", \"temperature\", \"fractions\"]\n"
+            "[thermal]\nstudy = \"small_follower.toml\"\ntimes = [\"30 us\", \"60 us\"]\n";
+  writeFile(dir / "scene.toml", ejecta::test::tinyImpactScene(o));
+  std::string output;
+  ASSERT_EQ(run(kEjecta + " run " + (dir / "scene.toml").string() + " --quiet --no-charts --threads 2 --out " +
+                    (dir / "run").string(),
+                output),
+            0)
+      << output;
+
+  // One pass per requested time: snapshots at 0, 30 and 60 us, so outputs 1 and 2.
+  for (const char* pass : {"thermal_0001", "thermal_0002"}) {
+    const fs::path d = dir / "run" / pass;
+    for (const char* file : {"thermal.json", "flux.csv", "wall_side0.csv", "sizing.csv"})
+      EXPECT_TRUE(fs::exists(d / file)) << d / file;
+  }
+  EXPECT_FALSE(fs::exists(dir / "run" / "thermal_0000"));
+  const Json summary = Json::parse(readFile(dir / "run" / "summary.json"));
+  const Json& x = summary["extras"];
+  EXPECT_EQ(x["thermal_passes"], 2);
+  ASSERT_TRUE(x.contains("thermal_side0_steady_K")) << x.dump(1);
+  EXPECT_TRUE(x.contains("thermal_shield_tungsten_mm"));
+  EXPECT_TRUE(x.contains("thermal_shield"));
+  EXPECT_NE(output.find("spacecraft: the hottest of 2"), std::string::npos) << output;
+
+  // The physics of a pass.
+  const Json t = Json::parse(readFile(dir / "run" / "thermal_0002" / "thermal.json"));
+  ASSERT_GT(t["emitters"].get<int>(), 0) << "no material above the study's threshold";
+  ASSERT_TRUE(t["occluder"].is_object()) << t["occluder"];
+  EXPECT_GT(t["occluder"]["triangles"].get<int>(), 100);
+  const Json* side0 = patch(t, "side0");
+  const Json* aft = patch(t, "aft");
+  ASSERT_TRUE(side0 && aft);
+  const double q0 = (*side0)["peak_flux_W_m2"], qAft = (*aft)["peak_flux_W_m2"];
+  // side0 looks down into the crater, aft away from it: at least ten times less (the aft face
+  // sees only hot particles thrown above the box, if any).
+  EXPECT_GT(q0, 0.0);
+  EXPECT_LT(qAft, 0.1 * q0);
+  // Eq. 4.8 with no sink: eps sigma T^4 = alpha q, to the round-off of the printed digits.
+  const double a = (*side0)["absorptivity"], e = (*side0)["emissivity"];
+  const double T = (*side0)["steady_temperature_K"];
+  EXPECT_NEAR(e * ejecta::radiation::kStefanBoltzmann * std::pow(T, 4), a * q0, 1e-8 * a * q0);
+
+  // `ejecta thermal` on the snapshot of the same output: the same particles (stored in double
+  // precision) and the same deterministic rays, so the same flux up to the printed digits.
+  const fs::path again = dir / "again";
+  ASSERT_EQ(run(kEjecta + " thermal " + (dir / "small_follower.toml").string() + " --from " +
+                    (dir / "run" / "snapshots" / "snap_0002.h5").string() + " --out " + again.string(),
+                output),
+            0)
+      << output;
+  const Json fromFile = Json::parse(readFile(again / "thermal.json"));
+  EXPECT_EQ(t["emitters"], fromFile["emitters"]);
+  EXPECT_EQ(t["occluder"]["triangles"], fromFile["occluder"]["triangles"]);
+  for (const Json& p : t["patches"]) {
+    const Json* q = patch(fromFile, p["patch"]);
+    ASSERT_TRUE(q) << p["patch"];
+    const double inSitu = p["peak_flux_W_m2"], fromSnapshot = (*q)["peak_flux_W_m2"];
+    EXPECT_NEAR(inSitu, fromSnapshot, 1e-9 * std::max(1.0, std::abs(inSitu))) << p["patch"];
+  }
+  fs::remove_all(dir);
+}
+
+TEST(ChainThermalErrors, PlanarRunIsRefusedBeforeItStarts) {
+  const fs::path dir = fs::temp_directory_path() / ("ejecta_chain_thermal_err_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  ejecta::test::TinyImpact o;
+  o.dimension = "2d";
+  o.extra = "[thermal]\nstudy = \"thermal/follower\"\n";
+  writeFile(dir / "planar.toml", ejecta::test::tinyImpactScene(o));
+  std::string out;
+  EXPECT_NE(run(kEjecta + " run " + (dir / "planar.toml").string() + " --quiet --out " + (dir / "p").string(), out), 0);
+  EXPECT_NE(out.find("planar.toml"), std::string::npos) << out;
+  EXPECT_NE(out.find("no 3D extent"), std::string::npos) << out;
+  EXPECT_FALSE(fs::exists(dir / "p" / "summary.json"));
+
+  o.dimension = "rz";
+  o.extra = "[thermal]\nstudy = \"no_such_study.toml\"\n";
+  writeFile(dir / "missing.toml", ejecta::test::tinyImpactScene(o));
+  EXPECT_NE(run(kEjecta + " run " + (dir / "missing.toml").string() + " --quiet --out " + (dir / "m").string(), out), 0);
+  EXPECT_NE(out.find("key 'thermal.study'"), std::string::npos) << out;
+  EXPECT_NE(out.find("no_such_study.toml"), std::string::npos) << out;
+  fs::remove_all(dir);
+}
+
+}  // namespace
