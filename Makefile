@@ -28,12 +28,18 @@ verification: build
 	cd $(BUILD) && ctest --output-on-failure -L verification
 
 # Each under a minute on 2 cores: SPH hydro (3D Sedov), particles to grids and VDB files (3D and
-# RZ revolved), and the impact scene's solid-mechanics overhead; the last two at 1 and 2 threads.
+# RZ revolved), the impact scene's solid-mechanics overhead, ray-cast view factors, the thermal
+# chain with and without the asteroid as occluder, the wall solvers, and off-screen rendering;
+# throughput per core at 1 and 2 threads where it scales.
 bench: build
 	$(BUILD)/bench/ejecta_bench_sedov --n 40
 	$(BUILD)/bench/ejecta_bench_fields --threads-sweep
 	$(BUILD)/bench/ejecta_bench_fields --geometry rz --threads-sweep
 	$(BUILD)/bench/ejecta_bench_impact --threads-sweep
+	$(BUILD)/bench/ejecta_bench_viewfactor --max-build 100000
+	$(BUILD)/bench/ejecta_bench_thermal
+	$(BUILD)/bench/ejecta_bench_wall_heat --threads-sweep
+	$(BUILD)/bench/ejecta_bench_render --threads-sweep
 
 clean:
 	rm -rf $(BUILD) $(BUILD).configure.log

@@ -104,6 +104,9 @@ FractureModel makeFracture(const MaterialSpec& spec, bool hasStrength) {
   if (!f.present) return model;
   model.erosionStrain = valueOr(f, "erosion_strain", model.erosionStrain);
   model.crackSpeedFactor = valueOr(f, "crack_speed_factor", model.crackSpeedFactor);
+  model.maxCrackIncrement = valueOr(f, "max_crack_increment", model.maxCrackIncrement);
+  if (!(model.maxCrackIncrement > 0.0 && model.maxCrackIncrement <= 1.0))
+    fail("fracture.max_crack_increment must be in (0, 1]: the most a crack fraction may grow in one step");
   model.seed = static_cast<std::uint64_t>(valueOr(f, "seed", 1.0));
   if (f.model == "none") return model;  // erosion alone, if erosion_strain is given
   if (f.model == "grady_kipp") {

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "sim/density_pass.hpp"
+#include "sim/fracture.hpp"
 #include "sim/hydro_force.hpp"
 #include "sim/programmed_burn.hpp"
 
@@ -82,7 +83,7 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
     ws_.artificialStress = scene_.sph.artificialStress < 0.0 ? 0.3 : scene_.sph.artificialStress;
   }
   if (materials_.anyFracture() && !p_.hasFracture()) p_.enableFracture();
-  burnVelocity_ = burnVelocities(scene_, materials_);
+  burn_ = burnTable(scene_, materials_);
   if (!scene_.detonations.empty() && !p_.hasBurn())
     throw SimulationError("scene '" + scene_.name + "' detonates an explosive but the particles "
                           "carry no lighting times (build them with buildParticles)");
@@ -142,7 +143,7 @@ void Simulation::evaluateEquationOfState() {
     materials_[m].eos->evaluate(p_.rho.data(), p_.u.data(), p_.P.data(), p_.cs.data(),
                                 members.data(), members.size());
   }
-  applyProgrammedBurn(p_, burnVelocity_, scene_.sph.eta, stateTime_);
+  applyProgrammedBurn(p_, burn_, scene_.sph.eta, stateTime_);
   applyMaterialState(p_, materials_);
 }
 
@@ -204,7 +205,9 @@ void Simulation::computeNextTimestep() {
     for (int d = 0; d < 3; ++d) a2 += p_.a[d][i] * p_.a[d][i];
     if (a2 > 0.0) dtForce = std::min(dtForce, sph.forceFactor * std::sqrt(h / std::sqrt(a2)));
   }
-  double dt = std::min(dtCourant, dtForce);
+  // Crack growth: no Grady-Kipp crack fraction may grow by more than maxCrackIncrement in a
+  // step, so that the stress a cracking particle sheds reaches its neighbours while it cracks.
+  double dt = std::min({dtCourant, dtForce, crackGrowthTimestep(p_, materials_)});
   if (scene_.time.dtMax > 0.0 && dt > scene_.time.dtMax) dt = scene_.time.dtMax;
   if (dt == std::numeric_limits<double>::max()) dt = scene_.time.dtMax > 0 ? scene_.time.dtMax
                                                                          : scene_.time.tEnd;
@@ -263,6 +266,9 @@ void Simulation::kickSolidState(double half, bool predict) {
     strainHalf_.resize(nc > 0 ? n : 0);
   }
   if (nc == 0 && !fracture) return;
+  // Damage caps of the state this kick starts from, before its stress moves.
+  const std::vector<double> caps =
+      fracture ? crackCaps(p_, materials_, flaws_, ws_.dim) : std::vector<double>{};
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     // Predict: y_half = y + dt/2 y', y = y_half + dt/2 y'. Final: y = y_half + dt/2 y'_new.
@@ -274,9 +280,9 @@ void Simulation::kickSolidState(double half, bool predict) {
       if (predict) strainHalf_[i] = p_.totalStrain[i] + half * p_.strainRate[i];
       p_.totalStrain[i] = strainHalf_[i] + half * p_.strainRate[i];
     }
-    if (fracture) {
-      if (predict) crackHalf_[i] = std::min(p_.crack[i] + half * p_.dcrack_dt[i], 1.0);
-      p_.crack[i] = std::min(crackHalf_[i] + half * p_.dcrack_dt[i], 1.0);
+    if (fracture) {  // bounded by the cap, which an explicit update could overshoot
+      if (predict) crackHalf_[i] = advanceCrack(p_.crack[i], p_.dcrack_dt[i], half, caps[i]);
+      p_.crack[i] = advanceCrack(crackHalf_[i], p_.dcrack_dt[i], half, caps[i]);
     }
   }
 }

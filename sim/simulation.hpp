@@ -13,6 +13,7 @@
 #include "sim/hydro_workspace.hpp"
 #include "sim/materials.hpp"
 #include "sim/particles.hpp"
+#include "sim/programmed_burn.hpp"
 #include "sim/scene.hpp"
 #include "sim/solid_state.hpp"
 
@@ -78,9 +79,10 @@ class Simulation {
   double hMin_ = 0.0;
   std::uint32_t maxNeighbours_ = 1u << 30;
   std::vector<std::vector<std::size_t>> materialMembers_;
-  // Programmed burn: detonation velocity per material (0: not detonated), and the time of the
-  // state the equation of state is evaluated for (the predicted end of the step).
-  std::vector<double> burnVelocity_;
+  // Programmed burn: detonation velocity and C-J compression per material (velocity 0: not
+  // detonated), and the time of the state the equation of state is evaluated for (the
+  // predicted end of the step).
+  BurnTable burn_;
   double stateTime_ = 0.0;
   // Leapfrog half-step state.
   Vec3Array vHalf_;

@@ -1,12 +1,63 @@
 #include "sim/solid_state.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 
 #include "sim/fracture.hpp"
 #include "sim/tensor.hpp"
 
 namespace ejecta {
+
+namespace {
+
+// Flaws of particle i that its present state activates, out of all it holds; {0, 0} for a
+// particle outside the Grady-Kipp tables.
+struct FlawActivity {
+  std::uint32_t active = 0;
+  std::uint32_t total = 0;
+};
+
+// The bulk modulus of the intact material, rho c^2 with c the equation of state's sound speed:
+// p.cs holds sqrt(c^2 + 4G/(3 rho)) (applyMaterialState) and no damage enters either.
+double intactBulkModulus(const ParticleSet& p, std::size_t i, double shearModulus) {
+  return std::max(p.rho[i] * p.cs[i] * p.cs[i] - 4.0 * shearModulus / 3.0, 0.0);
+}
+
+FlawActivity flawActivity(const ParticleSet& p, const Material& mat, const FlawSet& flaws,
+                          int dimension, std::size_t i) {
+  const std::size_t id = static_cast<std::size_t>(p.id[i]);
+  if (flaws.empty() || id >= flaws.tableOfId.size() || flaws.tableOfId[id] < 0) return {};
+  const FlawTable& table = flaws.tables[static_cast<std::size_t>(flaws.tableOfId[id])];
+  const std::size_t row = flaws.rowOfId[id];
+  FlawActivity a;
+  a.total = table.count(row);
+  const double D = p.damage(i);
+  if (D >= 1.0) {
+    a.active = a.total;
+    return a;
+  }
+  // Largest principal stress of the damaged stress state, tension positive.
+  const SymTensor sigma = effectiveStress(p, i);
+  double tension;
+  if (dimension == 3) {
+    std::array<double, 3> values;
+    symmetricEigen(sigma, values, nullptr);
+    tension = values[2];
+  } else {
+    double lo, hi, c, s;
+    planeEigen(sigma[kXX], sigma[kYY], sigma[kXY], lo, hi, c, s);
+    tension = std::max(hi, sigma[kZZ]);  // zz (hoop in RZ) is principal too
+  }
+  if (tension <= 0.0) return a;
+  const double G = mat.strength->shearModulus;
+  const double strain = tension / ((1.0 - D) * youngsModulus(intactBulkModulus(p, i, G), G));
+  a.active = table.activeCount(row, strain);
+  return a;
+}
+
+}  // namespace
 
 SymTensor effectiveStress(const ParticleSet& p, std::size_t i) {
   SymTensor sigma;
@@ -77,7 +128,8 @@ void applyPlasticity(ParticleSet& p, const MaterialTable& materials, bool accumu
     const double dEp = radialReturn(S, flow, s.shearModulus);
     if (dEp == 0.0) continue;
     for (int c = 0; c < nc; ++c) p.stress[c][i] = S[c];
-    if (accumulate) p.plasticStrain[i] += dEp;
+    // Only the intact fraction 1 - D yields (applyPlasticity in solid_state.hpp).
+    if (accumulate) p.plasticStrain[i] += (1.0 - p.damage(i)) * dEp;
   }
 }
 
@@ -88,32 +140,42 @@ void computeCrackGrowth(ParticleSet& p, const MaterialTable& materials, const Fl
   for (std::size_t i = 0; i < p.numReal; ++i) {
     p.dcrack_dt[i] = 0.0;
     const Material& mat = materials[static_cast<std::size_t>(p.material[i])];
-    if (mat.fracture.kind != FractureKind::GradyKipp || flaws.empty()) continue;
-    const std::size_t id = static_cast<std::size_t>(p.id[i]);
-    if (id >= flaws.tableOfId.size() || flaws.tableOfId[id] < 0) continue;
-    const double D = p.damage(i);
-    if (D >= 1.0) continue;
-    // Largest principal stress of the damaged stress state, tension positive.
-    const SymTensor sigma = effectiveStress(p, i);
-    double tension;
-    if (dimension == 3) {
-      std::array<double, 3> values;
-      symmetricEigen(sigma, values, nullptr);
-      tension = values[2];
-    } else {
-      double lo, hi, c, s;
-      planeEigen(sigma[kXX], sigma[kYY], sigma[kXY], lo, hi, c, s);
-      tension = std::max(hi, sigma[kZZ]);  // zz (hoop in RZ) is principal too
-    }
-    if (tension <= 0.0) continue;
+    if (mat.fracture.kind != FractureKind::GradyKipp || p.damage(i) >= 1.0) continue;
+    const FlawActivity activity = flawActivity(p, mat, flaws, dimension, i);
+    if (activity.active == 0) continue;
+    // c_g = 0.4 c_l of the intact material: undamaged K and G (miluphcuda lowers G by 1 - D).
     const double G = mat.strength->shearModulus;
-    const double bulk = std::max(p.rho[i] * p.cs[i] * p.cs[i] - 4.0 * G / 3.0, 0.0);
-    const double strain = tension / ((1.0 - D) * youngsModulus(bulk, G));
-    const FlawTable& table = flaws.tables[static_cast<std::size_t>(flaws.tableOfId[id])];
-    const std::size_t row = flaws.rowOfId[id];
-    p.dcrack_dt[i] = crackGrowthRate(table.activeCount(row, strain), table.count(row), p.crack[i],
-                                     p.cs[i], p.h[i], mat.fracture.crackSpeedFactor);
+    const double cl = intactLongitudinalSpeed(intactBulkModulus(p, i, G), G, p.rho[i]);
+    p.dcrack_dt[i] = crackGrowthRate(activity.active, activity.total, p.crack[i], cl, p.h[i],
+                                     mat.fracture.crackSpeedFactor);
   }
+}
+
+std::vector<double> crackCaps(const ParticleSet& p, const MaterialTable& materials,
+                              const FlawSet& flaws, int dimension) {
+  std::vector<double> caps(p.numReal, 1.0);
+  if (!p.hasFracture()) return caps;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.numReal; ++i) {
+    // Only growing cracks need their cap (and the eigenvalues behind it).
+    if (!(p.dcrack_dt[i] > 0.0)) continue;
+    const Material& mat = materials[static_cast<std::size_t>(p.material[i])];
+    if (mat.fracture.kind != FractureKind::GradyKipp) continue;
+    const FlawActivity activity = flawActivity(p, mat, flaws, dimension, i);
+    caps[i] = crackCap(activity.active, activity.total);
+  }
+  return caps;
+}
+
+double crackGrowthTimestep(const ParticleSet& p, const MaterialTable& materials) {
+  double dt = std::numeric_limits<double>::infinity();
+  if (!p.hasFracture()) return dt;
+  for (std::size_t i = 0; i < p.numReal; ++i) {
+    if (!(p.dcrack_dt[i] > 0.0)) continue;
+    const FractureModel& f = materials[static_cast<std::size_t>(p.material[i])].fracture;
+    dt = std::min(dt, crackStepLimit(p.dcrack_dt[i], f.maxCrackIncrement));
+  }
+  return dt;
 }
 
 std::size_t applyFailure(ParticleSet& p, const MaterialTable& materials) {

@@ -29,13 +29,26 @@ FlawSet distributeMaterialFlaws(const ParticleSet& initial, const MaterialTable&
 // the signal speed the time step and the viscosity must respect.
 void applyMaterialState(ParticleSet& p, const MaterialTable& materials);
 
-// Radial return of the deviatoric stress to each material's flow stress; with
-// `accumulatePlasticStrain` the equivalent plastic strain grows by the returned increment.
+// Radial return of the stored deviatoric stress S to each material's flow stress Y. The force
+// uses (1 - D) S, so the effective stress then sits on the damaged yield surface (1 - D) Y. With
+// `accumulatePlasticStrain` the equivalent plastic strain grows by (1 - D) times the returned
+// increment: the intact volume fraction yields, the cracked fraction D slides on its cracks and
+// adds none, so fully damaged material (no shear) gains no plastic strain (docs/materials.md).
 void applyPlasticity(ParticleSet& p, const MaterialTable& materials, bool accumulatePlasticStrain);
 
 // Grady-Kipp rates d(crack)/dt of the real particles (0 for other materials).
 void computeCrackGrowth(ParticleSet& p, const MaterialTable& materials, const FlawSet& flaws,
                         int dimension);
+
+// Grady-Kipp caps (n_act / n_total)^(1/3) of the crack fraction of every real particle whose
+// crack grows (dcrack_dt > 0), from the flaws its present state activates; 1 for the others.
+// The time integration bounds each update of the crack fraction by these (advanceCrack).
+std::vector<double> crackCaps(const ParticleSet& p, const MaterialTable& materials,
+                              const FlawSet& flaws, int dimension);
+
+// The longest time step over which no real particle's crack fraction grows, at its present
+// rate, by more than its material's maxCrackIncrement (infinity when no crack grows).
+double crackGrowthTimestep(const ParticleSet& p, const MaterialTable& materials);
 
 // Principal-stress failure and erosion: sets the damage of failing particles to 1 (and their
 // tension to 0). Returns the number of particles that failed now.

@@ -372,10 +372,14 @@ void print(const FragmentationReport& r) {
 // The scene at reduced resolution: 2.5 mm spacing (7,208 target particles, 24 across the
 // diameter) and an 8-particle projectile whose spacing keeps its mass at 0.2 g, to 20 us. By then
 // the core and the outer spall shell have separated; to 60 us they change by a few % of the mass.
+// At Courant 0.3, the default of every other scene: the crack growth limit on the time step
+// (FractureModel::maxCrackIncrement) resolves the cracking, as Courant 0.1 did before it. Without
+// that limit, at Courant 0.3 the core stays joined to the shell and this test fails (measured:
+// one intact group of 0.32 of the mass, mean radius 0.81 R; docs/fragmentation.md).
 TEST(Fragmentation, CoreTypeBreakUpOfABasaltSphere) {
   const std::string path = std::string(EJECTA_SOURCE_DIR) + "/scenes/nakamura_fujiwara.toml";
   const Scene scene = loadScene(path, {"bodies[0].spacing=2.5 mm", "bodies[1].spacing=2.76317 mm",
-                                       "time.t_end=20 us"});
+                                       "time.t_end=20 us", "sph.courant=0.3"});
   const ImpactFrame frame = impactFrame(scene);
   // First contact 30 degrees from the projectile's path, as in the experiment.
   EXPECT_NEAR(frame.angle * 180.0 / std::numbers::pi, 30.0, 0.01);
@@ -398,10 +402,11 @@ TEST(Fragmentation, CoreTypeBreakUpOfABasaltSphere) {
   const FragmentationReport r = analyse(initial, last, frame, outcome.summary.tEnd);
   print(r);
   // Measured: the impact cap 1.00 damaged, the outer half within 60 degrees of the impact point
-  // 0.98 and of the antipode 0.36; 0.71 of the mass damaged; a core of 0.072 (mean radius
-  // 0.49 R, centre at depth 1.26 R) at 1.8 m/s and a spall shell of 0.22 at 5.5 m/s. The bounds
-  // are wide because fragment masses move with resolution: the core holds 0.20 at the scene's
-  // 1.5 mm and 0.24 at 1.2 mm (docs/fragmentation.md).
+  // 0.98 and of the antipode 0.38; 0.69 of the mass damaged; a core of 0.091 (mean radius
+  // 0.44 R, centre at depth 1.21 R) at 0.73 m/s and a spall shell of 0.21 at 5.9 m/s (before the
+  // fixes of the issue 3 review, at Courant 0.1: core 0.072 at 1.8 m/s, shell 0.22 at 5.5 m/s).
+  // The bounds are wide because fragment masses move with resolution: the core holds 0.19 at
+  // the scene's 1.5 mm at 20 us (docs/fragmentation.md).
   // The struck side is shattered, the far side much less.
   EXPECT_GT(r.impactCapDamaged, 0.9);
   EXPECT_GT(r.nearOuterDamaged, 0.9);
@@ -421,7 +426,10 @@ TEST(Fragmentation, CoreTypeBreakUpOfABasaltSphere) {
   EXPECT_GT(core->fraction, 0.03);
   EXPECT_GT(shell->fraction, 0.03);
   EXPECT_GT(core->centreDepth, 1.0);
-  EXPECT_GT(-dot(core->velocity, frame.axis), 0.5);
+  // Away from the impact point: within 60 degrees of the axis. Its speed is the least converged
+  // number here (0.35 m/s with steps 10x shorter, docs/fragmentation.md), so only its direction
+  // and an upper bound are asserted.
+  EXPECT_GT(-dot(core->velocity, frame.axis), 0.5 * norm(core->velocity));
   EXPECT_LT(norm(core->velocity), 4.0);
   EXPECT_LT(norm(core->velocity), norm(shell->velocity));
 }

@@ -110,7 +110,7 @@ TEST(ProgrammedBurn, BurnFractionRampsOverOneAndAHalfSpacingsAndNeverFalls) {
   p.burnFraction[0] = 0.0;
   p.P.assign(1, 1e10);
   const double D = 7000.0, eta = 2.0;  // spacing h/eta = 1 mm; the ramp takes 1.5 mm / D
-  const std::vector<double> velocity{D};
+  const BurnTable velocity{{D}, {0.0}, {0.0}};  // no compression burn
   applyProgrammedBurn(p, velocity, eta, 0.5e-6);  // before lighting
   EXPECT_EQ(p.P[0], 0.0);
   p.P[0] = 1e10;
@@ -126,6 +126,49 @@ TEST(ProgrammedBurn, BurnFractionRampsOverOneAndAHalfSpacingsAndNeverFalls) {
   applyProgrammedBurn(p, velocity, eta, 1e-6);
   EXPECT_EQ(p.burnFraction[0], 1.0);
   EXPECT_EQ(p.P[0], 1e10);
+}
+
+// LS-DYNA's beta burn: explosive compressed before the front reaches it burns by its compression,
+// F2 = (1 - V) / (1 - V_CJ), and is fully burnt at the C-J density.
+TEST(ProgrammedBurn, CompressionAheadOfTheFrontBurnsByBeta) {
+  ParticleSet p;
+  const double rho0 = 1630.0;
+  p.append({0, 0, 0}, {0, 0, 0}, 1.0, rho0, 4e6, 0.002, 0);
+  p.enableBurn();
+  p.lightingTime[0] = 1e-3;  // the front is far away
+  p.burnFraction[0] = 0.0;
+  const BurnTable burn{{6930.0}, {rho0}, {0.75}};
+  p.rho[0] = rho0 / 0.9;  // V = 0.9: F2 = 0.1 / 0.25
+  p.P.assign(1, 1e10);
+  applyProgrammedBurn(p, burn, 2.0, 0.0);
+  EXPECT_NEAR(p.burnFraction[0], 0.4, 1e-12);
+  EXPECT_NEAR(p.P[0], 0.4e10, 1e-2);
+  p.rho[0] = rho0;  // expanding back does not un-burn
+  applyProgrammedBurn(p, burn, 2.0, 0.0);
+  EXPECT_NEAR(p.burnFraction[0], 0.4, 1e-12);
+  p.rho[0] = rho0 / 0.7;  // beyond the C-J density: fully burnt
+  applyProgrammedBurn(p, burn, 2.0, 0.0);
+  EXPECT_EQ(p.burnFraction[0], 1.0);
+}
+
+// TNT's C-J relative volume from its JWL set: V_CJ = 1 - p_CJ / (rho0 D^2), about 0.73-0.74 for
+// every published TNT set (Dobratz & Crawford 1985: rho_CJ / rho0 = 1.36-1.38).
+TEST(ProgrammedBurn, TableTakesTheCjStateOfTheExplosive) {
+  const Scene scene = parseScene(burstScene("jwl", 0.5), "burst.toml");
+  const MaterialTable materials = MaterialTable::fromScene(scene);
+  const BurnTable t = burnTable(scene, materials);
+  bool found = false;
+  for (std::size_t m = 0; m < materials.size(); ++m) {
+    if (t.velocity[m] <= 0.0) {
+      EXPECT_EQ(t.rho0[m], 0.0);
+      continue;
+    }
+    found = true;
+    EXPECT_GT(t.cjRelativeVolume[m], 0.71);
+    EXPECT_LT(t.cjRelativeVolume[m], 0.76);
+    EXPECT_GT(t.rho0[m], 1500.0);
+  }
+  EXPECT_TRUE(found);
 }
 
 TEST(ProgrammedBurn, LineInitiationLightsByDistanceToTheSegment) {
@@ -270,7 +313,7 @@ TEST(ProgrammedBurn, SnapshotRestoresLightingTimesAndBurnFractions) {
   const MaterialTable materials = MaterialTable::fromScene(scene);
   ParticleSet p = buildParticles(scene, materials);
   p.P.assign(p.size(), 1e9);
-  applyProgrammedBurn(p, burnVelocities(scene, materials), scene.sph.eta, 2e-5);
+  applyProgrammedBurn(p, burnTable(scene, materials), scene.sph.eta, 2e-5);
   SnapshotInfo info;
   info.geometry = scene.geometry;
   info.sceneSource = burstScene("jwl", 0.5);

@@ -28,6 +28,8 @@ double ResolutionRun::metric(const std::string& name) const {
 
 namespace detail {
 
+std::vector<Problem> undexProblems();  // sim/verify/undex.cpp
+
 Scene problemScene(const std::string& name, const Options& options) {
   const std::string key = "verification/" + name;
   const std::string_view text = findEmbeddedScene(key);
@@ -341,6 +343,7 @@ const std::vector<Problem>& problems() {
     std::vector<Problem> out = list;
     for (const Problem& p : detail::strengthProblems()) out.push_back(p);
     for (const Problem& p : detail::sourceProblems()) out.push_back(p);
+    for (const Problem& p : detail::undexProblems()) out.push_back(p);
     return out;
   }();
   return all;
