@@ -1,13 +1,18 @@
-// `ejecta render SNAPSHOT.h5|RUN_DIR`: a PNG of the particles coloured by a field.
+// `ejecta render SNAPSHOT.h5|FILE.vdb|RUN_DIR`: a PNG of the particles coloured by a field, or of
+// a grid file: a slice of a grid, or an iso-surface (apps/grid_images.hpp).
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <regex>
 #include <stdexcept>
 
 #include "apps/commands.hpp"
+#include "apps/grid_images.hpp"
 #include "apps/particle_images.hpp"
+#include "fields/grid_slice.hpp"
 #include "sim/snapshot.hpp"
+#include "sim/units.hpp"
 
 namespace fs = std::filesystem;
 
@@ -15,25 +20,142 @@ namespace ejecta::app {
 
 namespace {
 
-// A run directory's last snapshot, or the path itself.
-fs::path snapshotOf(const fs::path& input) {
-  if (!fs::is_directory(input)) return input;
-  const fs::path dir = input / "snapshots";
+// The file of a run directory's series `sub`/`prefix`NNNN`extension` with the highest index.
+fs::path lastOfSeries(const fs::path& input, const std::string& sub, const std::string& prefix,
+                      const std::string& extension) {
+  const fs::path dir = input / sub;
   std::vector<fs::path> files;
-  const std::regex pattern(R"(snap_(\d{4,})\.h5)");
+  const std::regex pattern(prefix + R"((\d{4,}))" + extension);
   if (fs::is_directory(dir))
     for (const auto& e : fs::directory_iterator(dir))
       if (std::regex_match(e.path().filename().string(), pattern)) files.push_back(e.path());
-  if (files.empty()) throw std::runtime_error(input.string() + ": no snapshots/snap_NNNN.h5");
-  auto index = [](const fs::path& f) { return std::stol(f.stem().string().substr(5)); };
+  if (files.empty())
+    throw std::runtime_error(input.string() + ": no " + sub + "/" + prefix + "NNNN" + extension);
+  auto index = [&](const fs::path& f) { return std::stol(f.stem().string().substr(prefix.size())); };
   return *std::max_element(files.begin(), files.end(),
                            [&](const fs::path& a, const fs::path& b) { return index(a) < index(b); });
+}
+
+// A run directory's last snapshot, or the path itself.
+fs::path snapshotOf(const fs::path& input) {
+  if (!fs::is_directory(input)) return input;
+  return lastOfSeries(input, "snapshots", "snap_", R"(\.h5)");
+}
+
+bool wantsGrids(const RenderArgs& a) {
+  return !a.grid.empty() || !a.slice.empty() || !a.iso.empty() || !a.colorBy.empty();
+}
+
+// The dimension of a grid's stored units (docs/fields.md), for values given with units.
+Dimension dimensionOfUnits(const std::string& units) {
+  if (units.empty() || units == "1") return Dimension::None;
+  for (const Dimension& d : {Dimension::Length, Dimension::Density, Dimension::Temperature, Dimension::Pressure,
+                             Dimension::SpecificEnergy, Dimension::Velocity, Dimension::Time})
+    if (siUnit(d) == units) return d;
+  throw std::invalid_argument("grid units '" + units + "' are not known: give the value as a plain number");
+}
+
+// A plain number (SI, the grid's units) or "<number> <unit>" of the expected dimension.
+double parseValue(const std::string& text, Dimension expected, const std::string& option) {
+  double v = 0.0;
+  const char* end = text.data() + text.size();
+  const auto [p, ec] = std::from_chars(text.data(), end, v);
+  if (ec == std::errc() && p == end) return v;
+  try {
+    return parseQuantity(text, expected);
+  } catch (const std::exception& e) {
+    throw std::invalid_argument(option + " '" + text + "': " + e.what());
+  }
+}
+
+// "z", "z=2.5", "x=-1 m".
+GridSliceImageOptions parseSlice(const std::string& text) {
+  GridSliceImageOptions o;
+  const std::string letter = text.substr(0, text.find('='));
+  if (letter == "x") o.axis = 0;
+  else if (letter == "y") o.axis = 1;
+  else if (letter == "z") o.axis = 2;
+  else throw std::invalid_argument("--slice '" + text + "': expected x, y or z, optionally =VALUE (\"z=2.5 m\")");
+  if (text.size() > 1) {
+    if (text[1] != '=' || text.size() == 2)
+      throw std::invalid_argument("--slice '" + text + "': expected x, y or z, optionally =VALUE (\"z=2.5 m\")");
+    o.value = parseValue(text.substr(2), Dimension::Length, "--slice");
+  }
+  return o;
+}
+
+// " K", " kg/m^3"; nothing for a dimensionless grid ("1").
+std::string unitsText(const std::string& units) { return units.empty() || units == "1" ? "" : " " + units; }
+
+int renderGridFile(const RenderArgs& args, const fs::path& file) {
+  if (!args.field.empty())
+    throw std::invalid_argument("--field names a particle field; for a grid file name the grid with --grid");
+  if (!args.view.empty() && args.view != "auto")
+    throw std::invalid_argument("--view is for snapshots: a grid's slice is drawn in its plane, an iso-surface in 3D");
+  if (!args.slice.empty() && !args.iso.empty()) throw std::invalid_argument("give --slice or --iso, not both");
+  if (!args.iso.empty() && !args.grid.empty())
+    throw std::invalid_argument("--iso names its own grid (--iso GRID=VALUE); --grid is for slices");
+  if (!args.slice.empty() && !args.colorBy.empty())
+    throw std::invalid_argument("--color-by colours an iso-surface; a slice is coloured by its own grid");
+  if (args.size < 64 || args.size > 8192)
+    throw std::invalid_argument("--size " + std::to_string(args.size) + ": expected 64 to 8192 pixels");
+  const std::vector<std::string> names = fields::gridNames(file.string());
+  const bool hasSurface = std::find(names.begin(), names.end(), "surface") != names.end();
+  // No choice made: the material surface when the file has one (3D and RZ runs), else a slice.
+  const bool iso = !args.iso.empty() || !args.colorBy.empty() || (args.slice.empty() && args.grid.empty() && hasSurface);
+  render::Renderer renderer({.width = args.size, .height = args.size});
+
+  if (iso) {
+    IsoSurfaceImageOptions o;
+    const std::size_t eq = args.iso.find('=');
+    if (!args.iso.empty()) o.grid = args.iso.substr(0, eq);
+    if (o.grid.empty()) throw std::invalid_argument("--iso '" + args.iso + "': expected GRID or GRID=VALUE");
+    if (eq != std::string::npos) {
+      const fields::GridHeader h = fields::readGridHeader(file.string(), o.grid);
+      o.isovalue = parseValue(args.iso.substr(eq + 1), dimensionOfUnits(h.units), "--iso");
+    }
+    o.colorBy = args.colorBy;
+    o.log = args.log;
+    if (!args.cut.empty()) o.cut = args.cut;
+    const fs::path out = args.out.empty() ? fs::path("iso_" + o.grid + ".png") : fs::path(args.out);
+    const GridImageSummary s = writeIsoSurfaceImage(renderer, file, o, out);
+    std::printf("ejecta: %s = %.6g%s of %s (t = %.6g s): %zu triangles", s.grid.c_str(), s.isovalue,
+                unitsText(s.units).c_str(), file.filename().c_str(), s.time, s.triangles);
+    if (s.cutAt) std::printf(", cut at %s = %.6g m", o.cut.c_str(), *s.cutAt);
+    if (!o.colorBy.empty())
+      std::printf(", coloured by %s (%.6g to %.6g%s)", o.colorBy.c_str(), s.colorMin, s.colorMax,
+                  unitsText(s.colorUnits).c_str());
+    std::printf("; camera %.6g m from (%.6g, %.6g, %.6g), %.6g px/m there; picture %d x %d px -> %s\n",
+                s.cameraDistance, s.target[0], s.target[1], s.target[2], s.pixelsPerMetre, s.plotWidth,
+                s.plotHeight, out.c_str());
+    return 0;
+  }
+
+  GridSliceImageOptions o = args.slice.empty() ? GridSliceImageOptions{} : parseSlice(args.slice);
+  if (!args.grid.empty()) o.grid = args.grid;
+  o.log = args.log;
+  const fs::path out = args.out.empty() ? fs::path("grid_" + o.grid + ".png") : fs::path(args.out);
+  const GridImageSummary s = writeGridSliceImage(renderer, file, o, out);
+  const char* axis[3] = {"x", "y", "z"};
+  std::printf("ejecta: %s on %s = %.6g m of %s (t = %.6g s): %d x %d samples, colours %.6g to %.6g%s%s; "
+              "%.6g px/m; picture %d x %d px -> %s\n",
+              s.grid.c_str(), axis[s.axis], s.planeValue, file.filename().c_str(), s.time, s.samplesX, s.samplesY,
+              s.colorMin, s.colorMax, unitsText(s.colorUnits).c_str(), o.log ? " (log)" : "", s.pixelsPerMetre,
+              s.plotWidth, s.plotHeight, out.c_str());
+  return 0;
 }
 
 }  // namespace
 
 int renderCommand(const RenderArgs& args) {
-  const fs::path snapshot = snapshotOf(args.input);
+  const fs::path input(args.input);
+  if (input.extension() == ".vdb") return renderGridFile(args, input);
+  if (fs::is_directory(input) && wantsGrids(args))
+    return renderGridFile(args, lastOfSeries(input, "fields", "fields_", R"(\.vdb)"));
+  if (wantsGrids(args))
+    throw std::invalid_argument("--grid, --slice, --iso and --color-by are for grid files (.vdb) and run directories");
+
+  const fs::path snapshot = snapshotOf(input);
   SnapshotInfo info;
   const ParticleSet p = readSnapshot(snapshot.string(), info);
   ParticleImageOptions options;

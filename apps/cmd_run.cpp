@@ -78,9 +78,11 @@ void printSummary(const RunOutcome& r, const std::string& outDir) {
       const SummaryValue* v = extra(key);
       return v && std::holds_alternative<std::int64_t>(*v) ? std::get<std::int64_t>(*v) : 0;
     };
-    std::printf("  spacecraft: the hottest of %ld pass(es), over the rock of t = %.3g ms (%s/; %ld hot "
+    std::printf("  spacecraft: the hottest of %ld pass(es), %s t = %.3g ms (%s/; up to %ld hot "
                 "particles -> %ld emitters)\n",
-                static_cast<long>(count("thermal_passes")), number("thermal_time_s") * 1e3,
+                static_cast<long>(count("thermal_passes")),
+                text("thermal_hot_material") == "evolving" ? "the one from" : "over the rock of",
+                number("thermal_time_s") * 1e3,
                 text("thermal_dir").c_str(), static_cast<long>(count("thermal_hot_particles")),
                 static_cast<long>(count("thermal_emitters")));
     std::printf("    %-8s %15s %18s %14s\n", "face", "peak flux", "steady (eq. 4.8)", "wall peak");
@@ -100,7 +102,7 @@ void printSummary(const RunOutcome& r, const std::string& outDir) {
     const fs::path dir(outDir);
     std::printf("  outputs: %s/{summary.json, energy.csv, snapshots.xdmf, snapshots/%s%s%s%s%s}\n",
                 outDir.c_str(), fs::is_directory(dir / "fields") ? ", fields/" : "",
-                extra("thermal_time_s") ? ", thermal_NNNN/" : "",
+                extra("thermal_time_s") ? ", thermal_*/" : "",
                 fs::is_directory(dir / "images") ? ", images/" : "",
                 fs::exists(dir / "gauges.csv") ? ", gauges.csv" : "",
                 fs::exists(dir / "crater_profile.csv") ? ", crater_profile.csv" : "");

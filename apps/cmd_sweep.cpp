@@ -1,6 +1,7 @@
 // `ejecta sweep SCENE --vary key=v1,v2,...`: runs the variants of a scene as separate `ejecta run`
 // processes (several at once where cores allow), then collects what each coupled into the
-// target into sweep.csv and prints it as a table (docs/coupling.md).
+// target into sweep.csv, prints it as a table and charts it as sweep.png (apps/sweep_chart.hpp;
+// docs/coupling.md, docs/asteroid_studies.md).
 #include <nlohmann/json.hpp>
 #include <omp.h>
 #include <fcntl.h>
@@ -13,10 +14,13 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include "apps/commands.hpp"
+#include "apps/sweep_chart.hpp"
+#include "render/charts.hpp"
 #include "sim/atomic_file.hpp"
 #include "sim/scene.hpp"
 #include "sim/sweep.hpp"
@@ -70,6 +74,36 @@ std::string csvCell(std::string s) {
   return out + "\"";
 }
 
+// sweep.png from sweep.csv, or a line saying why there is none; a sweep never fails for a chart.
+void writeSweepChart(const fs::path& out, const std::string& name, const std::vector<SweepAxis>& axes,
+                     const std::map<std::string, std::vector<std::optional<double>>>& numeric) {
+  const SweepChartChoice choice = chooseSweepChart(axes, numeric);
+  if (!choice.draw) {
+    std::printf("ejecta: no sweep chart: %s\n", choice.why.c_str());
+    return;
+  }
+  render::ChartRunner charts;
+  if (!charts.chartsAvailable()) {
+    std::printf("ejecta: no sweep chart: %s (sweep.csv is written)\n",
+                charts.unavailableReason().c_str());
+    return;
+  }
+  render::ChartSpec spec{.kind = choice.bars ? render::ChartKind::Bar : render::ChartKind::Line,
+                         .csv = out / "sweep.csv",
+                         .x = choice.x,
+                         .series = {{.y = choice.y, .label = choice.ylabel, .markers = true}},
+                         .xlabel = choice.xlabel,
+                         .ylabel = choice.ylabel,
+                         .title = name + ": energy coupled into the target",
+                         .out = out / "sweep.png"};
+  try {
+    charts.writeChart(spec);
+    std::printf("ejecta: sweep chart: %s\n", (out / "sweep.png").c_str());
+  } catch (const std::exception& e) {
+    std::printf("ejecta: sweep chart failed: %s\n", e.what());
+  }
+}
+
 }  // namespace
 
 int sweepCommand(const SweepArgs& args) {
@@ -85,7 +119,8 @@ int sweepCommand(const SweepArgs& args) {
   }
   const fs::path out = args.outDir.empty() ? fs::path("runs") / (name + "_sweep") : fs::path(args.outDir);
   fs::create_directories(out);
-  const int cores = omp_get_num_procs();
+  // The cores this sweep may use: OMP_NUM_THREADS when set (a shared machine), else all.
+  const int cores = std::max(1, std::min(omp_get_num_procs(), omp_get_max_threads()));
   const int jobs = std::clamp(args.jobs > 0 ? args.jobs : cores, 1, static_cast<int>(variants.size()));
   const int threads = std::max(1, cores / jobs);
   std::fprintf(stderr, "ejecta: sweep of '%s': %zu variants, %d at a time with %d thread%s each -> %s\n",
@@ -129,6 +164,7 @@ int sweepCommand(const SweepArgs& args) {
   csv << ",status";
   std::vector<std::string> columns;
   std::vector<std::map<std::string, double>> values(variants.size());
+  std::map<std::string, std::vector<std::optional<double>>> numeric;
   for (std::size_t k = 0; k < variants.size(); ++k) {
     std::ifstream in(dirOf(k) / "summary.json");
     if (!in) continue;
@@ -142,8 +178,15 @@ int sweepCommand(const SweepArgs& args) {
         columns.push_back(key);
         break;
       }
-  for (const std::string& c : columns) csv << ',' << c;
-  csv << '\n';
+  for (const std::string& c : columns) {
+    csv << ',' << c;
+    auto& column = numeric[c];
+    for (const auto& v : values) {
+      const auto it = v.find(c);
+      column.push_back(it == v.end() ? std::nullopt : std::optional<double>(it->second));
+    }
+  }
+  csv << ",label\n";  // the variant's values as a chart's tick label
   csv.precision(8);
   std::printf("%-8s", "variant");
   for (const SweepAxis& a : axes) std::printf("  %-24s", a.key.c_str());
@@ -167,11 +210,14 @@ int sweepCommand(const SweepArgs& args) {
         std::printf("  %-14s", "-");
       }
     }
-    csv << '\n';
+    std::vector<std::string> varied;
+    for (const SweepAxis& a : axes) varied.push_back(a.values[k]);
+    csv << ',' << csvCell(sweepVariantLabel(varied)) << '\n';
     std::printf("\n");
   }
   writeFileAtomically(out / "sweep.csv", csv.str());
   std::printf("ejecta: sweep table: %s\n", (out / "sweep.csv").c_str());
+  writeSweepChart(out, name, axes, numeric);
   const bool allOk = std::all_of(status.begin(), status.end(), [](int s) { return s == 0; });
   return allOk ? 0 : 2;
 }

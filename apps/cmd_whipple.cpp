@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "apps/commands.hpp"
+#include "apps/json_text.hpp"
 #include "radiation/whipple_study.hpp"
 #include "render/charts.hpp"
 #include "sim/atomic_file.hpp"
@@ -16,15 +17,6 @@ namespace ejecta::app {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string jsonString(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (static_cast<unsigned char>(c) >= 0x20) out += c;
-  }
-  return out + "\"";
-}
 
 // ble.png through the chart script's "ble" kind (curves per rear wall, regime corners, the
 // threat). Returns an empty string, or why there is no chart.

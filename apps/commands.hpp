@@ -75,13 +75,19 @@ struct ThermalArgs {
 int thermalCommand(const ThermalArgs& args);
 
 struct RenderArgs {
-  std::string input;                   // SNAPSHOT.h5 or RUN_DIR (its last snapshot)
+  std::string input;                   // SNAPSHOT.h5, FILE.vdb or RUN_DIR (its last snapshot; with
+                                       // a grid option below, its last fields/fields_NNNN.vdb)
   std::string field;                   // particle field (default density)
   std::string view;                    // auto | plane | rz | 3d
-  std::string out;                     // FILE.png (default <field>.png)
+  std::string out;                     // FILE.png (default <field>.png, grid_<G>.png, iso_<G>.png)
   int size = 1024;                     // pixels
   bool log = false;                    // log colour scale
-  std::string cut;                     // 3D: none | x | y | z (keep the <= 0 half)
+  std::string cut;                     // 3D and iso-surfaces: none | x | y | z (keep the <= 0 half)
+  // Grid files (apps/grid_images.hpp): a slice of `grid` on a plane, or an iso-surface.
+  std::string grid;                    // the grid to slice (default density)
+  std::string slice;                   // x | y | z, optionally =VALUE ("z=2.5 m")
+  std::string iso;                     // GRID, optionally =VALUE in the grid's units
+  std::string colorBy;                 // the iso-surface coloured by this grid
 };
 int renderCommand(const RenderArgs& args);
 

@@ -79,14 +79,18 @@ int main(int argc, char** argv) {
   thermalCmd->add_option("--occluder-inset", thermalArgs.occluderInset, "Voxels inside the surface where the occluder lies (default 1.5, 0-2)");
 
   ejecta::app::RenderArgs renderArgs;
-  CLI::App* renderCmd = app.add_subcommand("render", "Draw a snapshot's particles coloured by a field (PNG)");
-  renderCmd->add_option("input", renderArgs.input, "Snapshot (.h5) or run directory")->required();
+  CLI::App* renderCmd = app.add_subcommand("render", "Draw a snapshot's particles coloured by a field, or a slice or iso-surface of a grid file (PNG)");
+  renderCmd->add_option("input", renderArgs.input, "Snapshot (.h5), grid file (.vdb) or run directory")->required();
   renderCmd->add_option("--field,-f", renderArgs.field, "Particle field (default density)");
   renderCmd->add_option("--view", renderArgs.view, "auto | plane | rz | 3d");
-  renderCmd->add_option("--out,-o", renderArgs.out, "Output PNG (default <field>.png)");
+  renderCmd->add_option("--out,-o", renderArgs.out, "Output PNG (default <field>.png; grid files: grid_<G>.png, iso_<G>.png)");
   renderCmd->add_option("--size", renderArgs.size, "Image size in pixels (default 1024)");
   renderCmd->add_flag("--log", renderArgs.log, "Logarithmic colour scale");
-  renderCmd->add_option("--cut", renderArgs.cut, "3D: none | x | y | z (keep the half below 0)");
+  renderCmd->add_option("--cut", renderArgs.cut, "3D particles and iso-surfaces: none | x | y | z (keep the half below 0)");
+  renderCmd->add_option("--grid,-g", renderArgs.grid, "Grid file: the grid to slice (default density)");
+  renderCmd->add_option("--slice", renderArgs.slice, "Grid file: the plane x|y|z[=VALUE] (default z, at 0 or the grid's middle)");
+  renderCmd->add_option("--iso", renderArgs.iso, "Grid file: the iso-surface GRID[=VALUE] (default surface=0)");
+  renderCmd->add_option("--color-by", renderArgs.colorBy, "Grid file: colour the iso-surface by this grid");
 
   ejecta::app::WhippleArgs whippleArgs;
   CLI::App* whippleCmd = app.add_subcommand("whipple", "Whipple-shield ballistic-limit curves and rear-wall sizing (docs/whipple.md)");

@@ -1,12 +1,16 @@
 #include "apps/run_images.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <sstream>
 
+#include "apps/grid_images.hpp"
 #include "apps/particle_images.hpp"
+#include "fields/grid_slice.hpp"
+#include "fields/run_outputs.hpp"
 #include "render/charts.hpp"
 #include "render/frame_names.hpp"
 #include "sim/energy_ledger.hpp"
@@ -87,6 +91,44 @@ std::vector<std::string> writeRunCharts(const fs::path& dir, const Scene& scene)
   return written;
 }
 
+bool listed(const std::vector<std::string>& list, const std::string& name) {
+  return std::find(list.begin(), list.end(), name) != list.end();
+}
+
+// The pictures of one grid file: slices through z = 0 and the surface coloured by temperature.
+// A picture that cannot be drawn (a grid with no active voxel yet, no surface) is reported and
+// skipped: the run goes on.
+void writeGridFrames(render::Renderer& renderer, const fs::path& dir, const ImageOutputOptions& im, long index) {
+  const fs::path file = dir / "fields" / fields::fieldFileName(index);
+  const int frame = static_cast<int>(index);
+  auto attempt = [&](const fs::path& out, auto draw) {
+    try {
+      draw(out);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "ejecta: warning: %s not drawn: %s\n", out.c_str(), e.what());
+    }
+  };
+  for (const std::string& grid : im.grids)
+    attempt(render::framePath(dir, "grid_" + grid, frame), [&](const fs::path& out) {
+      GridSliceImageOptions o;
+      o.grid = grid;
+      o.axis = 2;
+      o.value = 0.0;
+      o.log = listed(im.log, grid);
+      writeGridSliceImage(renderer, file, o, out);
+    });
+  if (im.surface)
+    attempt(render::framePath(dir, "surface", frame), [&](const fs::path& out) {
+      IsoSurfaceImageOptions o;
+      o.grid = "surface";
+      const std::vector<std::string> names = fields::gridNames(file.string());
+      if (listed(names, "temperature")) o.colorBy = "temperature";
+      o.log = listed(im.log, "temperature");
+      o.cut = im.cut;
+      writeIsoSurfaceImage(renderer, file, o, out);
+    });
+}
+
 }  // namespace
 
 void addImageOutputs(RunOptions& options, const Scene& scene, bool charts) {
@@ -96,6 +138,10 @@ void addImageOutputs(RunOptions& options, const Scene& scene, bool charts) {
     const ImageOutputOptions im = scene.images;
     const Geometry geometry = scene.geometry;
     const std::string name = scene.name;
+    // The fields hook runs before this one (cmd_run.cpp's configure adds it first), so at an
+    // output its cadence selects, the grid file of that output is on disk.
+    const bool gridFrames = scene.fields.enabled && (!im.grids.empty() || im.surface);
+    const int fieldsEvery = scene.fields.every;
     // One renderer (one GL context) for the whole run, made at the first frame.
     auto renderer = std::make_shared<std::unique_ptr<render::Renderer>>();
     auto previous = options.onOutput;
@@ -115,6 +161,8 @@ void addImageOutputs(RunOptions& options, const Scene& scene, bool charts) {
         writeParticleImage(**renderer, sim.particles(), geometry, info.time, name, o,
                            render::framePath(dir, field, static_cast<int>(info.snapshotIndex)));
       }
+      if (gridFrames && (final || info.snapshotIndex % fieldsEvery == 0))
+        writeGridFrames(**renderer, dir, im, info.snapshotIndex);
     };
   }
   if (!charts) return;

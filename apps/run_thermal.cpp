@@ -3,7 +3,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -12,6 +11,7 @@
 #include "apps/surface_occluder.hpp"
 #include "apps/thermal_outputs.hpp"
 #include "apps/thermal_picture.hpp"
+#include "radiation/format_number.hpp"
 #include "render/charts.hpp"
 #include "sim/embedded_scenes.hpp"
 #include "sim/simulation.hpp"
@@ -26,22 +26,52 @@ std::string sceneKeyError(const Scene& scene, const std::string& reason) {
   return scene.sourcePath + ":" + std::to_string(scene.thermal.line) + ": key 'thermal.study': " + reason;
 }
 
-// One pass as kept for the summary.
+// One finished pass as kept for the summary.
 struct Pass {
-  long snapshotIndex = 0;
-  double time = 0.0;
-  fs::path dir;
+  double time = 0.0;         // the material's time (snapshot), or the pass's start (evolving) [s]
+  bool evolving = false;
+  fs::path dir;              // relative to the run's directory
   radiation::ThermalResult result;
-  SnapshotEmitterStats stats;
-  std::size_t occluderTriangles = 0;  // the asteroid's surface, when the output has grids
-  double hottestFace = 0.0;  // [K]
+  SnapshotEmitterStats stats;          // the frame with the most emitters
+  std::size_t occluderTriangles = 0;   // the asteroid's surface, when the output has grids
+  double hottestFace = 0.0;            // [K]
+};
+
+// An evolving pass under way: the frames captured so far, one per sample time reached.
+struct OpenPass {
+  double start = 0.0;                  // [s]
+  std::vector<std::shared_ptr<const radiation::Emitters>> emitters;
+  std::vector<std::shared_ptr<const radiation::TriangleMesh>> occluders;
+  SnapshotEmitterStats largest;
+};
+
+// The asteroid's surface from the latest grid file the run wrote, meshed once per file.
+struct SurfaceCache {
+  std::string latestFile;              // set by the output hook
+  std::string meshedFile;
+  std::shared_ptr<const radiation::TriangleMesh> mesh;
+  SurfaceOccluderStats stats;
+  const radiation::TriangleMesh* current(const SurfaceOccluderOptions& options) {
+    if (latestFile.empty()) return nullptr;
+    if (latestFile != meshedFile) {
+      meshedFile = latestFile;
+      stats = {};
+      mesh = gridFileHasSurface(latestFile)
+                 ? std::make_shared<const radiation::TriangleMesh>(
+                       occluderFromGridFile(latestFile, options, &stats))
+                 : nullptr;
+    }
+    return mesh.get();
+  }
 };
 
 struct PassLog {
   std::vector<Pass> passes;
+  std::vector<OpenPass> open;
   std::vector<std::string> notes;
   std::size_t nextTime = 0;
   bool started = false;
+  SurfaceCache surface;
   std::unique_ptr<render::Renderer> renderer;
   bool pictures = true;
 };
@@ -94,6 +124,7 @@ void addSummary(const Pass& pass, const std::string& outDir, RunSummary& summary
   auto& x = summary.extras;
   const radiation::ThermalResult& r = pass.result;
   x.push_back({"thermal_time_s", pass.time});
+  x.push_back({"thermal_hot_material", std::string(pass.evolving ? "evolving" : "snapshot")});
   x.push_back({"thermal_dir", (fs::path(outDir) / pass.dir).string()});
   x.push_back({"thermal_hot_particles", static_cast<std::int64_t>(pass.stats.hot)});
   x.push_back({"thermal_emitters", static_cast<std::int64_t>(pass.stats.emitters)});
@@ -149,6 +180,141 @@ void writePassCharts(const Pass& pass, const fs::path& dir, const std::string& n
   charts.writeChart(temps);
 }
 
+
+// What every pass needs, fixed for the run.
+struct PassContext {
+  std::shared_ptr<const radiation::ThermalStudy> study;
+  SnapshotEmitterOptions emitterOptions;
+  SurfaceOccluderOptions occluderOptions;
+  fs::path outDir;
+  Geometry geometry = Geometry::Axisymmetric;
+  std::string sceneName;
+  bool charts = true;
+};
+
+// Runs the chain on the frames, writes the pass's files and picture, and logs it.
+void finishPass(const PassContext& c, PassLog& log, Pass pass,
+                const std::vector<radiation::PassFrame>& frames, const std::string& sourceJson,
+                const std::string& occluderText, const Simulation& sim,
+                std::optional<double> poseTime) {
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    pass.result = radiation::runThermalStudy(*c.study, frames);
+    writeThermalOutputs(c.outDir / pass.dir, *c.study, pass.result, sourceJson + ",\n" + occluderText);
+  } catch (const std::exception& e) {
+    log.notes.push_back("thermal pass at t = " + fixed(pass.time * 1e3, 3) + " ms failed: " + e.what());
+    std::fprintf(stderr, "ejecta: thermal pass at t = %g s failed: %s\n", pass.time, e.what());
+    return;
+  }
+  pass.hottestFace = hottestSteadyFace(pass.result);
+  if (log.pictures) {
+    try {
+      if (!log.renderer) log.renderer = std::make_unique<render::Renderer>();
+      writeThermalPicture(*log.renderer, sim.particles(), c.geometry, sim.time(), *c.study, pass.result,
+                          c.sceneName + ": hot material and the spacecraft's faces",
+                          c.outDir / pass.dir / "crater.png", poseTime);
+    } catch (const std::exception& e) {
+      log.pictures = false;
+      log.notes.push_back(std::string("no thermal pictures: ") + e.what());
+    }
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::fprintf(stderr,
+               "ejecta: thermal pass %s t = %.4g ms: up to %zu hot particles -> %zu emitters, %zu "
+               "occluder triangles; hottest steady face %.0f K (%.1f s) -> %s/\n",
+               pass.evolving ? "from" : "at", pass.time * 1e3, pass.stats.hot, pass.stats.emitters,
+               pass.occluderTriangles, pass.hottestFace, seconds, (c.outDir / pass.dir).string().c_str());
+  log.passes.push_back(std::move(pass));
+}
+
+// A pass over the material of one output, frozen during the pass.
+void snapshotPass(const PassContext& c, PassLog& log, const Simulation& sim, const SnapshotInfo& info) {
+  Pass pass;
+  pass.time = info.time;
+  char dirName[32];
+  std::snprintf(dirName, sizeof dirName, "thermal_%04ld", info.snapshotIndex);
+  pass.dir = dirName;
+  try {
+    const auto emitters = std::make_shared<const radiation::Emitters>(
+        emittersFromParticles(sim.particles(), c.geometry, c.emitterOptions, &pass.stats));
+    const radiation::TriangleMesh* occluder = log.surface.current(c.occluderOptions);
+    pass.occluderTriangles = occluder ? occluder->triangleCount() : 0;
+    const std::vector<radiation::PassFrame> frames(c.study->approach.times().size(),
+                                                   {emitters.get(), occluder});
+    const std::string source = particleSourceJson("in-situ", info.time, c.geometry, pass.stats);
+    const std::string occluderText =
+        occluderJson(occluder ? &log.surface.meshedFile : nullptr, c.occluderOptions, log.surface.stats);
+    finishPass(c, log, std::move(pass), frames, source, occluderText, sim, std::nullopt);
+  } catch (const std::exception& e) {
+    log.notes.push_back("thermal pass at t = " + fixed(info.time * 1e3, 3) + " ms failed: " + e.what());
+    std::fprintf(stderr, "ejecta: thermal pass at t = %g s failed: %s\n", info.time, e.what());
+  }
+}
+
+// Captures the frames of the evolving passes whose sample times the run has reached, and
+// finishes those that are complete. `padding`: the run ends; complete every open pass with its
+// last frame.
+void advanceEvolvingPasses(const PassContext& c, PassLog& log, const Simulation& sim, bool padding) {
+  const std::vector<double> samples = c.study->approach.times();
+  for (std::size_t k = 0; k < log.open.size();) {
+    OpenPass& open = log.open[k];
+    try {
+      while (open.emitters.size() < samples.size() &&
+             sim.time() >= (open.start + samples[open.emitters.size()]) * (1.0 - 1e-12)) {
+        SnapshotEmitterStats stats;
+        // Several sample times within one step share its material.
+        auto emitters = std::make_shared<const radiation::Emitters>(
+            emittersFromParticles(sim.particles(), c.geometry, c.emitterOptions, &stats));
+        if (stats.emitters >= open.largest.emitters) open.largest = stats;
+        const radiation::TriangleMesh* occluder = log.surface.current(c.occluderOptions);
+        open.emitters.push_back(emitters);
+        open.occluders.push_back(occluder ? log.surface.mesh : nullptr);
+      }
+    } catch (const std::exception& e) {
+      log.notes.push_back("thermal pass from t = " + fixed(open.start * 1e3, 3) + " ms failed: " + e.what());
+      log.open.erase(log.open.begin() + static_cast<std::ptrdiff_t>(k));
+      continue;
+    }
+    if (padding && !open.emitters.empty() && open.emitters.size() < samples.size()) {
+      log.notes.push_back("the run ended " + fixed((open.start + samples.back() - sim.time()) * 1e3, 3) +
+                          " ms before the pass from " + fixed(open.start * 1e3, 3) +
+                          " ms did: its last samples see the material of the run's end");
+      while (open.emitters.size() < samples.size()) {
+        open.emitters.push_back(open.emitters.back());
+        open.occluders.push_back(open.occluders.back());
+      }
+    }
+    if (open.emitters.size() < samples.size()) {
+      ++k;
+      continue;
+    }
+    std::vector<radiation::PassFrame> frames;
+    std::size_t triangles = 0;
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      frames.push_back({open.emitters[i].get(), open.occluders[i].get()});
+      if (open.occluders[i]) triangles = std::max(triangles, open.occluders[i]->triangleCount());
+    }
+    Pass pass;
+    pass.time = open.start;
+    pass.evolving = true;
+    pass.stats = open.largest;
+    pass.occluderTriangles = triangles;
+    pass.dir = "thermal_from_" + radiation::formatNumber("%.6g", open.start * 1e3) + "ms";
+    std::string source = "  \"emitter_kind\": \"particles\",\n  \"hot_material\": \"evolving\",\n"
+                         "  \"pass_start_s\": " + jsonNumber(open.start) +
+                         ",\n  \"largest_frame\": {\"hot_particles\": " + std::to_string(open.largest.hot) +
+                         ", \"emitters\": " + std::to_string(open.largest.emitters) + "}";
+    const std::string occluderText = triangles > 0
+        ? "  \"occluder\": {\"level_set\": \"surface\", \"from\": \"the run's latest grid file at each sample\", "
+          "\"triangles\": " + std::to_string(triangles) + "}"
+        : occluderJson(nullptr, c.occluderOptions, {});
+    const OpenPass finished = std::move(open);  // keeps the frames' material alive
+    log.open.erase(log.open.begin() + static_cast<std::ptrdiff_t>(k));
+    // The picture: the particles now, the spacecraft at its last sample, where it is now.
+    finishPass(c, log, std::move(pass), frames, source, occluderText, sim, samples.back());
+  }
+}
+
 }  // namespace
 
 radiation::ThermalStudy loadSceneThermalStudy(const Scene& scene) {
@@ -178,24 +344,35 @@ void addThermalOutputs(RunOptions& options, const Scene& scene, bool charts) {
     throw SceneError(scene.sourcePath + ":" + std::to_string(scene.thermal.line) +
                      ": table 'thermal': a " + std::string(geometryName(scene.geometry)) +
                      " run has no 3D extent to radiate from; use an RZ or 3D scene");
-  auto study = std::make_shared<const radiation::ThermalStudy>(loadSceneThermalStudy(scene));
+  auto context = std::make_shared<PassContext>();
+  context->study = std::make_shared<const radiation::ThermalStudy>(loadSceneThermalStudy(scene));
   std::vector<std::string> names;
   for (const MaterialSpec& m : scene.materials) names.push_back(m.name);
   std::vector<std::string> unknown;
-  const SnapshotEmitterOptions emitterOptions = emitterOptionsFor(*study, names, &unknown);
+  context->emitterOptions = emitterOptionsFor(*context->study, names, &unknown);
   for (const std::string& m : unknown)
     std::fprintf(stderr, "ejecta: warning: %s: emissivity given for '%s', a material the scene lacks\n",
-                 study->source.c_str(), m.c_str());
+                 context->study->source.c_str(), m.c_str());
+  context->outDir = options.outDir;
+  context->geometry = scene.geometry;
+  context->sceneName = scene.name;
+  context->charts = charts;
 
   auto log = std::make_shared<PassLog>();
-  const fs::path outDir = options.outDir;
   const ThermalOutputOptions wanted = scene.thermal;
-  const Geometry geometry = scene.geometry;
-  const std::string sceneName = scene.name;
 
   auto previous = options.onOutput;
   options.onOutput = [=](const Simulation& sim, const SnapshotInfo& info, bool final) {
     if (previous) previous(sim, info, final);
+    // The fields hook (added before this one) has written this output's grids, if it writes any.
+    char gridName[40];
+    std::snprintf(gridName, sizeof gridName, "fields_%04ld.vdb", info.snapshotIndex);
+    const fs::path gridFile = context->outDir / "fields" / gridName;
+    if (fs::exists(gridFile)) log->surface.latestFile = gridFile.string();
+    if (wanted.evolving) {
+      if (final) advanceEvolvingPasses(*context, *log, sim, true);
+      return;
+    }
     if (!log->started) {
       // A restarted run begins at its last snapshot: the passes before it were made by the run
       // that wrote it (their thermal_NNNN/ are there), so they are not repeated.
@@ -211,70 +388,40 @@ void addThermalOutputs(RunOptions& options, const Scene& scene, bool charts) {
       ++log->nextTime;
     }
     if (final && log->nextTime < wanted.times.size()) {
-      char note[160];
-      std::snprintf(note, sizeof note, "thermal times from %.6g s are after the run's end; ran at %.6g s",
-                    wanted.times[log->nextTime], info.time);
-      log->notes.push_back(note);
+      log->notes.push_back("thermal times from " + fixed(wanted.times[log->nextTime] * 1e3, 3) +
+                           " ms are after the run's end; ran at " + fixed(info.time * 1e3, 3) + " ms");
       log->nextTime = wanted.times.size();
       due = true;
     }
-    if (!due) return;
-    Pass pass;
-    pass.snapshotIndex = info.snapshotIndex;
-    pass.time = info.time;
-    char dirName[32];
-    std::snprintf(dirName, sizeof dirName, "thermal_%04ld", info.snapshotIndex);
-    pass.dir = dirName;
-    const auto start = std::chrono::steady_clock::now();
-    try {
-      const radiation::Emitters emitters =
-          emittersFromParticles(sim.particles(), geometry, emitterOptions, &pass.stats);
-      // The asteroid's surface occludes when the fields hook (run before this one) wrote the
-      // output's grid file with its level set, as `ejecta thermal --from` does by default.
-      char gridName[40];
-      std::snprintf(gridName, sizeof gridName, "fields_%04ld.vdb", info.snapshotIndex);
-      const std::string gridFile = (outDir / "fields" / gridName).string();
-      std::optional<radiation::TriangleMesh> occluder;
-      const SurfaceOccluderOptions occluderOptions;
-      SurfaceOccluderStats occluderStats;
-      if (fs::exists(gridFile) && gridFileHasSurface(gridFile))
-        occluder = occluderFromGridFile(gridFile, occluderOptions, &occluderStats);
-      pass.occluderTriangles = occluderStats.triangles;
-      pass.result = radiation::runThermalStudy(*study, emitters, occluder ? &*occluder : nullptr);
-      writeThermalOutputs(outDir / pass.dir, *study, pass.result,
-                          particleSourceJson("in-situ", info.time, geometry, pass.stats) + ",\n" +
-                              occluderJson(occluder ? &gridFile : nullptr, occluderOptions, occluderStats));
-    } catch (const std::exception& e) {
-      log->notes.push_back("thermal pass at t = " + fixed(info.time * 1e3, 3) + " ms failed: " + e.what());
-      std::fprintf(stderr, "ejecta: thermal pass at t = %g s failed: %s\n", info.time, e.what());
-      return;
-    }
-    pass.hottestFace = hottestSteadyFace(pass.result);
-    if (log->pictures) {
-      try {
-        if (!log->renderer) log->renderer = std::make_unique<render::Renderer>();
-        writeThermalPicture(*log->renderer, sim.particles(), geometry, info.time, *study, pass.result,
-                            sceneName + ": hot material and the spacecraft's faces",
-                            outDir / pass.dir / "crater.png");
-      } catch (const std::exception& e) {
-        log->pictures = false;
-        log->notes.push_back(std::string("no thermal pictures: ") + e.what());
-      }
-    }
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::fprintf(stderr,
-                   "ejecta: thermal pass at t = %.4g ms: %zu hot particles -> %zu emitters, %zu occluder "
-                   "triangles; hottest steady face %.0f K (%.1f s) -> %s/\n",
-                   info.time * 1e3, pass.stats.hot, pass.stats.emitters, pass.occluderTriangles,
-                   pass.hottestFace, seconds,
-                   (outDir / pass.dir).string().c_str());
-    log->passes.push_back(std::move(pass));
+    if (due) snapshotPass(*context, *log, sim, info);
   };
+
+  if (wanted.evolving) {
+    auto previousObserver = options.observer;
+    options.observer = [=](const Simulation& sim) {
+      if (previousObserver) previousObserver(sim);
+      if (!log->started) {
+        // As above: a restarted run does not repeat the passes that began before it.
+        log->started = true;
+        while (log->nextTime < wanted.times.size() && wanted.times[log->nextTime] < sim.time() * (1.0 - 1e-9))
+          ++log->nextTime;
+      }
+      // With no times, one pass from the start.
+      const std::vector<double> starts = wanted.times.empty() ? std::vector<double>{0.0} : wanted.times;
+      while (log->nextTime < starts.size() && sim.time() >= starts[log->nextTime] * (1.0 - 1e-12))
+      {
+        OpenPass open;
+        open.start = starts[log->nextTime++];
+        log->open.push_back(std::move(open));
+      }
+      if (!log->open.empty()) advanceEvolvingPasses(*context, *log, sim, false);
+    };
+  }
 
   auto previousFinish = options.onFinish;
   options.onFinish = [=](const Simulation& sim, RunSummary& summary) {
     if (previousFinish) previousFinish(sim, summary);
+    if (!log->open.empty()) advanceEvolvingPasses(*context, *log, sim, true);
     summary.extras.push_back({"thermal_passes", static_cast<std::int64_t>(log->passes.size())});
     std::string notes;
     for (const std::string& note : log->notes) notes += (notes.empty() ? "" : "; ") + note;
@@ -285,11 +432,11 @@ void addThermalOutputs(RunOptions& options, const Scene& scene, bool charts) {
     const Pass* governing = &log->passes.front();
     for (const Pass& p : log->passes)
       if (p.hottestFace > governing->hottestFace) governing = &p;
-    addSummary(*governing, outDir.string(), summary);
+    addSummary(*governing, context->outDir.string(), summary);
     for (const Pass& p : log->passes) {
-      if (!charts) break;
+      if (!context->charts) break;
       try {
-        writePassCharts(p, outDir / p.dir, sceneName);
+        writePassCharts(p, context->outDir / p.dir, context->sceneName);
       } catch (const std::exception& e) {
         notes += (notes.empty() ? "" : "; ") + std::string("thermal charts failed: ") + e.what();
         break;

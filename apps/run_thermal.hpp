@@ -1,12 +1,16 @@
 #pragma once
-// The in-situ radiation chain of a run whose scene has a [thermal] table (docs/thermal.md): at
-// the first output at or after each requested time (or at the last output), the hot particles
-// become emitters (apps/snapshot_emitters.hpp) and the study's spacecraft flies its pass over
-// them (radiation/thermal_study.hpp). Each pass writes thermal_NNNN/ (NNNN: the output's
-// snapshot index) with the files of `ejecta thermal` and a picture, crater.png; at the end the
-// summary gets the governing pass (the one with the hottest steady face): per-face flux and
-// temperatures, the structure's peak, and each candidate coating's thickness and mass, and
-// charts of its flux and wall histories.
+// The in-situ radiation chain of a run whose scene has a [thermal] table (docs/thermal.md). The
+// hot particles become emitters (apps/snapshot_emitters.hpp), the asteroid's surface from the
+// run's latest grid file (if it writes any) occludes (apps/surface_occluder.hpp), and the study's
+// spacecraft flies its pass (radiation/thermal_study.hpp):
+//  - hot_material = "snapshot": at the first output at or after each requested time (or at the
+//    last output), over that output's material, frozen during the pass; thermal_NNNN/ (NNNN: the
+//    snapshot index), the same numbers as `ejecta thermal --from` on that snapshot;
+//  - hot_material = "evolving": from each requested time, while the run goes on, each sample
+//    time of the pass seeing the material of its step; thermal_from_<t>ms/.
+// Each pass writes the files of `ejecta thermal` and crater.png; at the end the summary gets the
+// governing pass (the one with the hottest steady face): per-face flux and temperatures, the
+// structure's peak, each candidate coating's thickness and mass, and charts of its flux and wall.
 #include <filesystem>
 #include <string>
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "radiation/format_number.hpp"
 #include "sim/atomic_file.hpp"
 
 namespace ejecta::app {
@@ -28,17 +27,6 @@ SnapshotEmitterOptions emitterOptionsFor(const radiation::ThermalStudy& study,
         unknownMaterials->push_back(name);
   return options;
 }
-
-std::string jsonString(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (static_cast<unsigned char>(c) >= 0x20) out += c;
-  }
-  return out + "\"";
-}
-
-std::string jsonNumber(double x) { return radiation::formatNumber("%.10g", x); }
 
 std::string particleSourceJson(const std::string& path, double time, Geometry geometry,
                                const SnapshotEmitterStats& stats) {

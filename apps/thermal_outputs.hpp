@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/json_text.hpp"
 #include "apps/snapshot_emitters.hpp"
 #include "apps/surface_occluder.hpp"
 #include "radiation/thermal_study.hpp"
@@ -32,10 +33,5 @@ std::string occluderJson(const std::string* gridFile, const SurfaceOccluderOptio
 // above, comma-separated, no trailing comma) in thermal.json, and returns thermal.json's text.
 std::string writeThermalOutputs(const std::filesystem::path& dir, const radiation::ThermalStudy& study,
                                 const radiation::ThermalResult& result, const std::string& extraJson);
-
-// A JSON string literal of `s` (quotes and backslashes escaped, control characters dropped).
-std::string jsonString(const std::string& s);
-// A JSON number with 10 significant digits.
-std::string jsonNumber(double x);
 
 }  // namespace ejecta::app

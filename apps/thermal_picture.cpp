@@ -72,12 +72,12 @@ SectionBands sectionBands(const radiation::TriangleMesh& mesh, const std::vector
 void writeThermalPicture(render::Renderer& renderer, const ParticleSet& particles, Geometry geometry,
                          double time, const radiation::ThermalStudy& study,
                          const radiation::ThermalResult& result, const std::string& title,
-                         const std::filesystem::path& out) {
+                         const std::filesystem::path& out, std::optional<double> poseTime) {
   // The spacecraft where it sees the most, its faces at their steady temperatures.
   radiation::GeometryConfig craft;
   craft.source = study.source;
   craft.spacecraft = study.spacecraft;
-  const double when = peakFluxTime(result);
+  const double when = poseTime.value_or(peakFluxTime(result));
   const radiation::TriangleMesh mesh = radiation::buildRadiationScene(craft, when).surfaces;
   std::vector<double> faceTemperature(mesh.patchCount(), 0.0);
   for (std::size_t p = 0; p < mesh.patchCount(); ++p)

@@ -6,6 +6,7 @@
 // along its cut: a 3D body drawn whole would hide the faces that matter behind the ones facing the
 // viewer.
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "radiation/thermal_study.hpp"
@@ -25,10 +26,11 @@ struct SectionBands {
 SectionBands sectionBands(const radiation::TriangleMesh& mesh, const std::vector<double>& patchValues,
                           double band);
 
-// Draws the pass's picture to `out` (PNG, atomically). `time` is the snapshot's time [s].
+// Draws the pass's picture to `out` (PNG, atomically). `time` is the particles' time [s]; the
+// spacecraft is drawn at `poseTime` into its pass [s], or where it sees the most flux if unset.
 void writeThermalPicture(render::Renderer& renderer, const ParticleSet& particles, Geometry geometry,
                          double time, const radiation::ThermalStudy& study,
                          const radiation::ThermalResult& result, const std::string& title,
-                         const std::filesystem::path& out);
+                         const std::filesystem::path& out, std::optional<double> poseTime = {});
 
 }  // namespace ejecta::app

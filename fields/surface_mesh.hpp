@@ -43,6 +43,16 @@ struct SurfaceMesh {
 // the isovalue gives an empty mesh.
 SurfaceMesh meshSurfaceFile(const std::string& path, const SurfaceMeshOptions& options = {});
 
+// The iso-surface `options.grid` = `options.isovalue` of any float grid of the file. A level set
+// is meshed as by meshSurfaceFile (the same narrow-band limit). A fog volume is meshed at an
+// isovalue in the grid's units, enclosing the values above it (density above half the reference
+// density, temperature above 1500 K); the isovalue must exceed the grid's background (the value
+// of its inactive voxels, 0 in ejecta's files), so that the surface closes where the grid ends,
+// else std::invalid_argument. Either way the triangles are counter-clockwise seen from outside
+// (a fog volume's outside is the side of lower values). No crossing: an empty mesh. Throws
+// std::runtime_error naming the file when it cannot be read or has no such float grid.
+SurfaceMesh meshIsoSurfaceFile(const std::string& path, const SurfaceMeshOptions& options);
+
 // The voxel size [m] of grid `grid` of the OpenVDB file `path`, from its transform alone (the
 // tree is not read: cheap); nothing when the file is missing or unreadable or has no such grid.
 std::optional<double> gridVoxelSize(const std::string& path, const std::string& grid = "surface");

@@ -518,15 +518,31 @@ ThermalResult runThermalStudy(const ThermalStudy& study, const Emitters& emitter
 
 ThermalResult runThermalStudy(const ThermalStudy& study, const Emitters& emitters,
                               const TriangleMesh* occluder) {
-  const bool occluded = occluder && !occluder->triangles.empty();
-  if (occluded) validateMesh(*occluder, study.source + ": occluder");
+  const std::vector<PassFrame> frames(study.approach.times().size(), PassFrame{&emitters, occluder});
+  return runThermalStudy(study, frames);
+}
+
+ThermalResult runThermalStudy(const ThermalStudy& study, const std::vector<PassFrame>& frames) {
   ThermalResult r;
-  r.occluderTriangles = occluded ? occluder->triangleCount() : 0;
   r.name = study.name;
   r.source = study.source;
   r.times = study.approach.times();
-  r.emitterCount = emitters.size();
-  r.groupNames = emitters.groupNames;
+  if (frames.size() != r.times.size())
+    throw ThermalStudyError(study.source + ": " + std::to_string(frames.size()) +
+                            " frames of hot material for " + std::to_string(r.times.size()) +
+                            " sample times of the approach");
+  for (const PassFrame& f : frames) {
+    if (!f.emitters) throw ThermalStudyError(study.source + ": a frame of the pass has no emitters");
+    const bool occluded = f.occluder && !f.occluder->triangles.empty();
+    if (occluded && (&f == &frames.front() || f.occluder != (&f - 1)->occluder))
+      validateMesh(*f.occluder, study.source + ": occluder");
+    r.occluderTriangles = std::max(r.occluderTriangles, occluded ? f.occluder->triangleCount() : 0);
+    if (f.emitters->size() >= r.emitterCount) {
+      r.emitterCount = f.emitters->size();
+      r.groupNames = f.emitters->groupNames;
+    }
+  }
+  const bool occluded = r.occluderTriangles > 0;
 
   // The spacecraft's patches, in the body frame placed at t = 0 (to read names and areas).
   GeometryConfig craft;
@@ -557,13 +573,17 @@ ThermalResult runThermalStudy(const ThermalStudy& study, const Emitters& emitter
     checkPatches(w.patches, "line " + std::to_string(w.line) + ", walls");
   checkPatches(study.sizing.patches, "sizing.patches");
 
-  // 1. Flux along the pass: the emitters are static, the spacecraft moves.
+  // 1. Flux along the pass: the spacecraft moves, the hot material is the frame's.
   auto t0 = std::chrono::steady_clock::now();
-  for (double t : r.times) {
+  for (std::size_t i = 0; i < r.times.size(); ++i) {
+    const double t = r.times[i];
+    const Emitters& emitters = *frames[i].emitters;
+    const TriangleMesh* occluder = frames[i].occluder;
     RadiationScene scene;
     scene.surfaces = buildRadiationScene(craft, t).surfaces;
     scene.emitters = emitters;
-    if (occluded && !emitters.empty()) scene.occluder.mesh = *occluder;  // opaque, cold (T = 0)
+    if (occluder && !occluder->triangles.empty() && !emitters.empty())
+      scene.occluder.mesh = *occluder;  // opaque, cold (T = 0)
     const ViewFactorSolver solver(std::move(scene));
     for (std::size_t p = 0; p < r.patches.size(); ++p) {
       PatchThermal& pt = r.patches[p];
@@ -576,7 +596,7 @@ ThermalResult runThermalStudy(const ThermalStudy& study, const Emitters& emitter
       const ReceiverResult rr = solver.fromPatch(p, study.sampling);
       r.rays += rr.rays;
       pt.flux.push_back(rr.flux);
-      if (occluded) pt.toOccluder.push_back(rr.toOccluder);
+      if (occluded) pt.toOccluder.push_back(rr.toOccluder);  // zero in a frame without one
       pt.seedFlux.push_back(seedBaseline(emitters, solver.scene().surfaces, p, study.baseline).flux);
     }
   }

@@ -137,7 +137,7 @@ struct ThermalResult {
   std::map<std::string, double> totalAddedMass;
 };
 
-// The whole chain on the given emitters (static during the pass). An empty emitter set gives
+// The whole chain on the given emitters (static during the pass: a snapshot's). An empty emitter set gives
 // zero flux everywhere. Throws ThermalStudyError for a wall or sizing patch the spacecraft lacks.
 ThermalResult runThermalStudy(const ThermalStudy& study, const Emitters& emitters);
 // The same with an occluder (nullptr or empty: none): an opaque triangle mesh, static during the
@@ -146,6 +146,17 @@ ThermalResult runThermalStudy(const ThermalStudy& study, const Emitters& emitter
 // blocked. Throws MeshError for a malformed mesh.
 ThermalResult runThermalStudy(const ThermalStudy& study, const Emitters& emitters,
                               const TriangleMesh* occluder);
+
+// The hot material and the occluder the spacecraft sees at one sample time of its pass.
+struct PassFrame {
+  const Emitters* emitters = nullptr;   // required
+  const TriangleMesh* occluder = nullptr;
+};
+// The same with material that evolves during the pass: frames[i] at the approach's sample time
+// i (ApproachSpec::times()), as a run captures them while it advances (apps/run_thermal.hpp). The
+// result's emitterCount and groupNames are the largest frame's. Throws ThermalStudyError unless
+// there is one frame per sample time, each with emitters.
+ThermalResult runThermalStudy(const ThermalStudy& study, const std::vector<PassFrame>& frames);
 
 // Outputs, as text (the caller writes them): the flux table "time_s,<patch>,<patch>_se,..."; the
 // sizing table; the summary as JSON (docs/thermal.md lists the fields).

@@ -173,7 +173,8 @@ void fillBody(const Scene& scene, const MaterialTable& materials, std::size_t in
   const BodySpec& body = scene.bodies[index];
   const int dim = spatialDimension(scene.geometry);
   const bool rz = (scene.geometry == Geometry::Axisymmetric);
-  const std::string context = where(scene, body.line) + ": key 'bodies[" + std::to_string(index) +
+  const std::size_t entry = body.entry >= 0 ? static_cast<std::size_t>(body.entry) : index;
+  const std::string context = where(scene, body.line) + ": key 'bodies[" + std::to_string(entry) +
                               "]': body '" + body.name + "'";
   const double cell = latticeCellVolume(body.lattice, dim, body.spacing);
   const double h = scene.sph.eta * std::pow(cell, 1.0 / dim);
@@ -184,6 +185,8 @@ void fillBody(const Scene& scene, const MaterialTable& materials, std::size_t in
     if (!insideShape(body.shape, x, dim) || !insideDomain(scene, x, dim)) return;
     for (std::size_t k = 0; k < index; ++k)
       if (insideShape(scene.bodies[k].shape, x, dim)) return;  // an earlier body owns it
+    for (const VoidSpec& v : scene.voids)
+      if (v.firstCarved <= index && insideVoid(v, x, dim)) return;  // so does an earlier void
     // RZ: each particle is a ring of radius r; planar 2D: per metre depth; 1D: per m^2.
     const double mass = body.density * cell * (rz ? 2.0 * std::numbers::pi * x[0] : 1.0);
     p.append(x, body.velocity, mass, body.density, u, h, body.material);
@@ -193,7 +196,7 @@ void fillBody(const Scene& scene, const MaterialTable& materials, std::size_t in
   if (p.size() == before)
     throw SceneError(context +
                      ": produces no particles (the shape is outside the domain, "
-                     "covered by earlier bodies, or smaller than the spacing " +
+                     "covered by earlier bodies or voids, or smaller than the spacing " +
                      formatQuantity(body.spacing, Dimension::Length) + ")");
 }
 
@@ -266,6 +269,22 @@ bool insideShape(const ShapeSpec& shape, const std::array<double, 3>& x, int dim
     }
   }
   return false;
+}
+
+bool insideBowl(const BowlSpec& bowl, const std::array<double, 3>& x, int dimension) {
+  double height = 0.0, r2 = 0.0;
+  for (int d = 0; d < dimension; ++d) {
+    height += (x[d] - bowl.floor[d]) * bowl.axis[d];
+    r2 += (x[d] - bowl.floor[d]) * (x[d] - bowl.floor[d]);
+  }
+  if (height < 0.0) return false;
+  // Distance from the axis squared; in RZ (floor on the axis, axis along z) this is r^2.
+  const double off2 = r2 - height * height;
+  return off2 <= bowl.radius * bowl.radius * height / bowl.depth;
+}
+
+bool insideVoid(const VoidSpec& v, const std::array<double, 3>& x, int dimension) {
+  return v.isBowl ? insideBowl(v.bowl, x, dimension) : insideShape(v.shape, x, dimension);
 }
 
 ParticleSet buildParticles(const Scene& scene, const MaterialTable& materials) {

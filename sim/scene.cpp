@@ -58,16 +58,16 @@ const std::map<std::string_view, KeyList>& schemaTables() {
           "reference_strain_rate", "room_temperature"}},
         {"materials[].fracture",
          {"model", "weibull_k", "weibull_m", "tensile_strength", "erosion_strain",
-          "crack_speed_factor", "seed"}},
+          "crack_speed_factor", "max_crack_increment", "seed"}},
         {"bodies[]",
          {"name", "material", "shape", "min", "max", "center", "radius", "inner_radius",
           "outer_radius", "point", "normal", "lattice", "spacing", "density", "pressure",
-          "internal_energy", "velocity", "damage"}},
+          "internal_energy", "velocity", "damage", "void", "depth"}},
         {"energy_deposits[]", {"name", "energy", "body", "center", "radius", "profile", "width"}},
         {"detonations[]", {"name", "material", "point", "line_to", "time", "velocity"}},
         {"gauges[]", {"name", "position"}},
-        {"images", {"fields", "log", "every", "size", "cut"}},
-        {"thermal", {"study", "times"}},
+        {"images", {"fields", "log", "every", "size", "cut", "grids", "surface"}},
+        {"thermal", {"study", "times", "hot_material"}},
     };
   }();
   return tables;
@@ -658,6 +658,45 @@ void readCrater(const TableReader& root, Scene& scene) {
           nonNegativeMessage(c.resolution, Dimension::Length) + "; 0 = half the median h");
 }
 
+// [images] grids and surface: pictures of the grid files [fields] writes, so the names must be
+// grids it writes (docs/fields.md): its grids with "fractions" spelled out, and with the level
+// set, "surface" and "surface_<material>".
+void readGridImages(const TableReader& r, Scene& scene) {
+  ImageOutputOptions& im = scene.images;
+  const FieldsOutputOptions& f = scene.fields;
+  const bool grids = f.enabled && scene.geometry != Geometry::Line;
+  if (auto names = r.optStringArray("grids")) {
+    r.check(grids, "grids", scene.geometry == Geometry::Line
+                                ? "1D runs write no grids"
+                                : "needs a [fields] table: the pictures are of the grid files it writes");
+    std::vector<std::string> written;
+    for (const std::string& g : f.grids) {
+      if (g != "fractions") written.push_back(g);
+      else
+        for (const MaterialSpec& m : scene.materials) written.push_back("fraction_" + m.name);
+    }
+    if (f.levelSet) {
+      written.push_back("surface");
+      for (const MaterialSpec& m : scene.materials) written.push_back("surface_" + m.name);
+    }
+    std::string list;
+    for (const std::string& w : written) list += (list.empty() ? "" : ", ") + w;
+    for (const std::string& n : *names) {
+      bool known = false;
+      for (const std::string& w : written) known = known || w == n;
+      r.check(known, "grids", "'" + n + "' is not a grid the run writes (" + list + ")");
+    }
+    im.grids = *names;
+  }
+  im.surface = r.optBool("surface").value_or(false);
+  if (im.surface) {
+    r.check(grids && f.levelSet, "surface",
+            "needs a [fields] table with level_set = true: the picture is of its surface level set");
+    r.check(scene.geometry != Geometry::Planar || f.extrude > 0.0, "surface",
+            "a 2D planar run has a surface level set only when [fields] extrude is set");
+  }
+}
+
 void readImages(const TableReader& root, Scene& scene) {
   const toml::table* t = root.optTable("images");
   if (!t) return;
@@ -671,7 +710,8 @@ void readImages(const TableReader& root, Scene& scene) {
   };
   if (auto f = r.optStringArray("fields")) {
     checkFields("fields", *f);
-    r.check(!f->empty(), "fields", "give at least one field");
+    // No particle pictures is fine when the table asks for pictures of the grids.
+    r.check(!f->empty() || t->contains("grids") || t->contains("surface"), "fields", "give at least one field");
     im.fields = *f;
   }
   if (auto l = r.optStringArray("log")) {
@@ -685,6 +725,7 @@ void readImages(const TableReader& root, Scene& scene) {
   im.cut = r.optString("cut").value_or("z");
   r.check(im.cut == "none" || im.cut == "x" || im.cut == "y" || im.cut == "z", "cut",
           "expected \"none\", \"x\", \"y\" or \"z\"");
+  readGridImages(r, scene);
 }
 
 int lineOf(const toml::node& n) { return static_cast<int>(n.source().begin.line); }
@@ -697,6 +738,11 @@ void readThermal(const TableReader& root, Scene& scene) {
   th.enabled = true;
   th.line = lineOf(*t);
   th.study = r.requireString("study");
+  const std::string material = r.optString("hot_material").value_or("snapshot");
+  r.check(material == "snapshot" || material == "evolving", "hot_material",
+          "expected \"snapshot\" (the material of one output, frozen during the pass) or "
+          "\"evolving\" (the material of each moment of the pass)");
+  th.evolving = material == "evolving";
   r.check(!th.study.empty(), "study", "must name a study file");
   if (const toml::node* n = t->get("times")) {
     const toml::array* arr = n->as_array();
@@ -783,6 +829,7 @@ void readMaterialModels(const TableReader& r, MaterialSpec& m) {
                   {"tensile_strength", Dimension::Pressure},
                   {"erosion_strain", Dimension::None},
                   {"crack_speed_factor", Dimension::None},
+                  {"max_crack_increment", Dimension::None},
                   {"seed", Dimension::None}},
                  {"none", "grady_kipp", "principal_stress"}, m.fracture);
 }
@@ -952,6 +999,53 @@ void readShape(const TableReader& r, const Scene& scene, ShapeSpec& shape) {
                           std::string(1, "xyz"[d]) + ")");
 }
 
+// A paraboloid bowl (void bodies only): floor = `point`, opening along `normal`, `radius` wide at
+// `depth` above the floor.
+void readBowl(const TableReader& r, const Scene& scene, BowlSpec& bowl) {
+  for (std::string_view k : {"min", "max", "center", "inner_radius", "outer_radius"})
+    if (r.has(k)) r.fail(k, "not used by shape 'paraboloid' (it takes point, normal, radius, depth)");
+  for (std::string_view k : {"point", "normal", "radius", "depth"}) r.require(k);
+  const int dim = spatialDimension(scene.geometry);
+  const std::string layout = vectorLayout(scene.geometry);
+  const Dimension m = Dimension::Length;
+  bowl.floor = *r.optVector("point", m, dim, layout);
+  bowl.axis = *r.optVector("normal", Dimension::None, dim, layout);
+  double norm = 0.0;
+  for (int d = 0; d < dim; ++d) norm += bowl.axis[d] * bowl.axis[d];
+  r.check(norm > 0.0, "normal", "must not be the zero vector");
+  for (int d = 0; d < dim; ++d) bowl.axis[d] /= std::sqrt(norm);
+  if (scene.geometry == Geometry::Axisymmetric) {
+    r.check(bowl.floor[0] == 0.0, "point", "in rz a paraboloid's floor must be on the axis (r = 0)");
+    r.check(bowl.axis[0] == 0.0, "normal", "in rz a paraboloid must open along the axis ([0, 1] or [0, -1])");
+  }
+  r.check(dim >= 2, "shape", "a paraboloid needs 2D, RZ or 3D");
+  bowl.radius = r.requireQuantity("radius", m);
+  r.check(bowl.radius > 0.0, "radius", positiveMessage(bowl.radius, m));
+  bowl.depth = r.requireQuantity("depth", m);
+  r.check(bowl.depth > 0.0, "depth", positiveMessage(bowl.depth, m));
+}
+
+// A [[bodies]] entry with void = true: a name and a shape, nothing that particles would need.
+void readVoid(const TableReader& r, Scene& scene, int line) {
+  for (std::string_view k : {"material", "lattice", "spacing", "density", "pressure",
+                             "internal_energy", "velocity", "damage"})
+    r.check(!r.has(k), k, "a void body makes no particles: it takes name, shape and the shape's "
+                           "keys only");
+  VoidSpec v;
+  v.line = line;
+  v.name = r.requireString("name");
+  v.firstCarved = scene.bodies.size();
+  r.require("shape");
+  v.isBowl = r.optString("shape") == "paraboloid";
+  if (v.isBowl) {
+    readBowl(r, scene, v.bowl);
+  } else {
+    r.check(!r.has("depth"), "depth", "only shape 'paraboloid' takes a depth");
+    readShape(r, scene, v.shape);
+  }
+  scene.voids.push_back(std::move(v));
+}
+
 void readBodies(const TableReader& root, Scene& scene) {
   const std::vector<const toml::table*> list = root.tableArray("bodies");
   if (list.empty()) root.fail("bodies", "at least one [[bodies]] entry is required");
@@ -961,8 +1055,17 @@ void readBodies(const TableReader& root, Scene& scene) {
   std::set<std::string> names;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const TableReader r(root.context(), *list[i], "bodies[" + std::to_string(i) + "]", "bodies[]");
+    if (r.optBool("void").value_or(false)) {
+      checkUniqueName(r, names, r.requireString("name"));
+      readVoid(r, scene, lineOf(*list[i]));
+      continue;
+    }
+    if (r.optString("shape") == "paraboloid")
+      r.fail("shape", "shape 'paraboloid' is for void bodies only (add void = true)");
+    if (r.has("depth")) r.fail("depth", "only a void body's shape 'paraboloid' takes a depth");
     BodySpec b;
     b.line = lineOf(*list[i]);
+    b.entry = static_cast<int>(i);
     b.name = r.requireString("name");
     checkUniqueName(r, names, b.name);
     const std::string material = r.requireString("material");
@@ -997,6 +1100,14 @@ void readBodies(const TableReader& root, Scene& scene) {
     r.check(b.damage >= 0.0 && b.damage <= 1.0, "damage", "must be in [0, 1]");
     scene.bodies.push_back(std::move(b));
   }
+  if (scene.bodies.empty())
+    root.fail("bodies", "every [[bodies]] entry is a void; at least one must make particles");
+  for (const VoidSpec& v : scene.voids)
+    if (v.firstCarved >= scene.bodies.size())
+      throw SceneError(root.context().source() + ":" + std::to_string(v.line) +
+                       ": void body '" + v.name +
+                       "' is listed after every body and carves nothing (earlier bodies win: "
+                       "list it before the bodies it cuts)");
 }
 
 void readDeposits(const TableReader& root, Scene& scene) {
@@ -1018,6 +1129,8 @@ void readDeposits(const TableReader& root, Scene& scene) {
     if (const std::optional<std::string> body = r.optString("body")) {
       for (std::size_t b = 0; b < scene.bodies.size(); ++b)
         if (scene.bodies[b].name == *body) e.body = static_cast<int>(b);
+      for (const VoidSpec& v : scene.voids)
+        r.check(v.name != *body, "body", "'" + *body + "' is a void body: it has no particles");
       r.check(e.body >= 0, "body", "no body named '" + *body + "'");
     }
     // A body deposit without a centre covers the whole body (the seed's device particles).
@@ -1098,7 +1211,8 @@ void readDetonations(const TableReader& root, Scene& scene) {
     bool lit = false;
     for (const DetonationSpec& d : scene.detonations) lit = lit || d.material == body.material;
     if (!lit) {
-      const TableReader r(root.context(), *bodies[b], "bodies[" + std::to_string(b) + "]",
+      const std::size_t entry = body.entry >= 0 ? static_cast<std::size_t>(body.entry) : b;
+      const TableReader r(root.context(), *bodies[entry], "bodies[" + std::to_string(entry) + "]",
                           "bodies[]");
       r.fail("pressure", "give exactly one of 'pressure' and 'internal_energy' (only a body of "
                          "an explosive with a [[detonations]] entry may give neither)");

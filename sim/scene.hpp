@@ -122,6 +122,32 @@ struct BodySpec {
   std::array<double, 3> velocity{};         // [m/s]
   double damage = 0.0;                      // initial damage D in [0, 1] (1: rubble)
   int line = 0;
+  // Its index among the file's [[bodies]] entries, voids included, for messages; -1: the same
+  // as its index in Scene::bodies (a body built in code).
+  int entry = -1;
+};
+
+// A crater's bowl: a paraboloid of revolution about `axis` (a parabola in 2D planar) with its
+// vertex at `floor`, opening along `axis` (unit), `radius` wide at `depth` above the floor and
+// open beyond, as a crater opens to space.
+struct BowlSpec {
+  std::array<double, 3> floor{};
+  std::array<double, 3> axis{};
+  double depth = 0.0;
+  double radius = 0.0;
+};
+
+// A void: a [[bodies]] entry with `void = true`. It makes no particles but claims its space as a
+// body does, so the bodies listed after it lose their particles there (earlier bodies win): the
+// crater an impactor left, a cavity. Kept apart from Scene::bodies, the bodies with particles,
+// so that the energy ledger, the crater analysis and the restarts never see it.
+struct VoidSpec {
+  std::string name;
+  bool isBowl = false;          // shape = "paraboloid": `bowl`; otherwise `shape`
+  ShapeSpec shape;
+  BowlSpec bowl;
+  std::size_t firstCarved = 0;  // index in Scene::bodies of the first body it carves
+  int line = 0;
 };
 
 // Direct energy deposition (DED): energy added at t = 0 to the particles of a region, or of one
@@ -202,6 +228,11 @@ struct ImageOutputOptions {
   int every = 1;                        // with every Nth snapshot (and the last)
   int size = 1024;                      // pixels (square)
   std::string cut = "z";                // 3D: keep x, y or z <= 0; "none"
+  // Pictures of the grid files of [fields] (apps/grid_images.hpp), at the outputs both tables'
+  // cadences select: slices through the plane z = 0 of these grids, images/grid_<name>_NNNN.png,
+  // and the surface level set coloured by temperature, images/surface_NNNN.png.
+  std::vector<std::string> grids;
+  bool surface = false;
 };
 
 // [thermal]: the radiation chain (radiation/thermal_study.hpp) run in-situ on the particles at
@@ -214,6 +245,10 @@ struct ThermalOutputOptions {
   std::string study;
   // Run at the first output at or after each of these times [s]; empty: at the last output.
   std::vector<double> times;
+  // false: each pass flies over the hot material of one output (a snapshot's, frozen during the
+  // pass). true: each pass starts at its time and flies while the run goes on, each of its sample
+  // times seeing the material of that moment (the step at or after it).
+  bool evolving = false;
   int line = 0;                         // where [thermal] is, for messages
 };
 
@@ -227,6 +262,7 @@ struct Scene {
   TimeOptions time;
   std::vector<MaterialSpec> materials;
   std::vector<BodySpec> bodies;             // earlier bodies win where shapes overlap
+  std::vector<VoidSpec> voids;              // [[bodies]] entries with void = true
   std::vector<EnergyDepositSpec> deposits;
   std::vector<DetonationSpec> detonations;
   std::vector<GaugeSpec> gauges;

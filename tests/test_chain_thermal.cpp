@@ -14,8 +14,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "radiation/constants.hpp"
+#include "support/command_line.hpp"
 #include "support/tiny_impact.hpp"
 
 namespace fs = std::filesystem;
@@ -23,7 +25,10 @@ using Json = nlohmann::json;
 
 namespace {
 
-const std::string kEjecta = std::string(EJECTA_BINARY_DIR) + "/apps/ejecta";
+using ejecta::test::kEjecta;
+using ejecta::test::runCommand;
+using ejecta::test::readTextFile;
+using ejecta::test::writeTextFile;
 
 // A 0.1 m box coming down the axis towards the crater of the tiny impact (its target's top at
 // y = 0; the RZ axis is the world y axis), 0.3 m to 0.15 m above it. The tiny impact at 3 km/s
@@ -53,29 +58,6 @@ patches = ["side0"]
 rays = 65536
 )";
 
-std::string readFile(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void writeFile(const fs::path& p, const std::string& text) {
-  std::ofstream out(p);
-  out << text;
-}
-
-// Runs a command, returns its exit status and output (stdout and stderr).
-int run(const std::string& command, std::string& output) {
-  output.clear();
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return -1;
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
-  const int status = pclose(pipe);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
 const Json* patch(const Json& thermal, const std::string& name) {
   for (const Json& p : thermal["patches"])
     if (p["patch"] == name) return &p;
@@ -87,14 +69,14 @@ TEST(ChainThermal, InSituPassesMatchTheCommandAndThePhysics) {
   const fs::path dir = fs::temp_directory_path() / ("ejecta_chain_thermal_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
-  writeFile(dir / "small_follower.toml", kStudy);
+  writeTextFile(dir / "small_follower.toml", kStudy);
   ejecta::test::TinyImpact o;
   // Grids at every output: the asteroid's surface (their level set) occludes in both paths.
   o.extra = "[fields]\ngrids = [\"density\", \"temperature\", \"fractions\"]\n"
             "[thermal]\nstudy = \"small_follower.toml\"\ntimes = [\"30 us\", \"60 us\"]\n";
-  writeFile(dir / "scene.toml", ejecta::test::tinyImpactScene(o));
+  writeTextFile(dir / "scene.toml", ejecta::test::tinyImpactScene(o));
   std::string output;
-  ASSERT_EQ(run(kEjecta + " run " + (dir / "scene.toml").string() + " --quiet --no-charts --threads 2 --out " +
+  ASSERT_EQ(runCommand(kEjecta + " run " + (dir / "scene.toml").string() + " --quiet --no-charts --threads 2 --out " +
                     (dir / "run").string(),
                 output),
             0)
@@ -107,7 +89,7 @@ TEST(ChainThermal, InSituPassesMatchTheCommandAndThePhysics) {
       EXPECT_TRUE(fs::exists(d / file)) << d / file;
   }
   EXPECT_FALSE(fs::exists(dir / "run" / "thermal_0000"));
-  const Json summary = Json::parse(readFile(dir / "run" / "summary.json"));
+  const Json summary = Json::parse(readTextFile(dir / "run" / "summary.json"));
   const Json& x = summary["extras"];
   EXPECT_EQ(x["thermal_passes"], 2);
   ASSERT_TRUE(x.contains("thermal_side0_steady_K")) << x.dump(1);
@@ -116,7 +98,7 @@ TEST(ChainThermal, InSituPassesMatchTheCommandAndThePhysics) {
   EXPECT_NE(output.find("spacecraft: the hottest of 2"), std::string::npos) << output;
 
   // The physics of a pass.
-  const Json t = Json::parse(readFile(dir / "run" / "thermal_0002" / "thermal.json"));
+  const Json t = Json::parse(readTextFile(dir / "run" / "thermal_0002" / "thermal.json"));
   ASSERT_GT(t["emitters"].get<int>(), 0) << "no material above the study's threshold";
   ASSERT_TRUE(t["occluder"].is_object()) << t["occluder"];
   EXPECT_GT(t["occluder"]["triangles"].get<int>(), 100);
@@ -136,12 +118,12 @@ TEST(ChainThermal, InSituPassesMatchTheCommandAndThePhysics) {
   // `ejecta thermal` on the snapshot of the same output: the same particles (stored in double
   // precision) and the same deterministic rays, so the same flux up to the printed digits.
   const fs::path again = dir / "again";
-  ASSERT_EQ(run(kEjecta + " thermal " + (dir / "small_follower.toml").string() + " --from " +
+  ASSERT_EQ(runCommand(kEjecta + " thermal " + (dir / "small_follower.toml").string() + " --from " +
                     (dir / "run" / "snapshots" / "snap_0002.h5").string() + " --out " + again.string(),
                 output),
             0)
       << output;
-  const Json fromFile = Json::parse(readFile(again / "thermal.json"));
+  const Json fromFile = Json::parse(readTextFile(again / "thermal.json"));
   EXPECT_EQ(t["emitters"], fromFile["emitters"]);
   EXPECT_EQ(t["occluder"]["triangles"], fromFile["occluder"]["triangles"]);
   for (const Json& p : t["patches"]) {
@@ -153,23 +135,78 @@ TEST(ChainThermal, InSituPassesMatchTheCommandAndThePhysics) {
   fs::remove_all(dir);
 }
 
+// The flux.csv rows of a pass: per sample time, the columns as numbers.
+std::vector<std::vector<double>> fluxRows(const fs::path& csv) {
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);  // header
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::stringstream cells(line);
+    for (std::string c; std::getline(cells, c, ',');) row.push_back(std::stod(c));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// An evolving pass sees at each sample time the material of that moment. Its first and last
+// samples fall on outputs (the run lands on them), where a frozen pass over that output's
+// material, at the same pose, must give the same flux: the pass from 30 us samples at 30, 45 and
+// 60 us; the frozen pass of 30 us matches its first row, the frozen pass of 60 us its last.
+TEST(ChainThermal, EvolvingPassSeesTheMaterialOfEachMoment) {
+  const fs::path dir = fs::temp_directory_path() / ("ejecta_chain_evolving_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::string study = kStudy;
+  study.replace(study.find("duration = \"1 ms\""), 17, "duration = \"30 us\"");
+  writeTextFile(dir / "short_pass.toml", study);
+  std::string output;
+  for (const std::string mode : {"snapshot", "evolving"}) {
+    ejecta::test::TinyImpact o;
+    o.extra = "[thermal]\nstudy = \"short_pass.toml\"\nhot_material = \"" + mode + "\"\n" +
+              (mode == "snapshot" ? "times = [\"30 us\", \"60 us\"]\n" : "times = [\"30 us\"]\n");
+    writeTextFile(dir / (mode + ".toml"), ejecta::test::tinyImpactScene(o));
+    ASSERT_EQ(runCommand(kEjecta + " run " + (dir / (mode + ".toml")).string() +
+                      " --quiet --no-charts --threads 2 --out " + (dir / mode).string(),
+                  output),
+              0)
+        << output;
+  }
+  const auto evolving = fluxRows(dir / "evolving" / "thermal_from_0.03ms" / "flux.csv");
+  const auto at30 = fluxRows(dir / "snapshot" / "thermal_0001" / "flux.csv");
+  const auto at60 = fluxRows(dir / "snapshot" / "thermal_0002" / "flux.csv");
+  ASSERT_EQ(evolving.size(), 3u);
+  ASSERT_EQ(at30.size(), 3u);
+  ASSERT_EQ(at60.size(), 3u);
+  // Column 1 is side0's flux. Same material, pose and deterministic rays: equal to the printed
+  // digits.
+  EXPECT_NEAR(evolving[0][1], at30[0][1], 1e-9 * at30[0][1]);
+  EXPECT_NEAR(evolving[2][1], at60[2][1], 1e-9 * at60[2][1]);
+  // And the material does change over the pass: the frozen 30 us pass's last sample differs.
+  EXPECT_GT(std::abs(evolving[2][1] - at30[2][1]), 1e-3 * at30[2][1]);
+  const Json t = Json::parse(readTextFile(dir / "evolving" / "thermal_from_0.03ms" / "thermal.json"));
+  EXPECT_EQ(t["hot_material"], "evolving");
+  fs::remove_all(dir);
+}
+
 TEST(ChainThermalErrors, PlanarRunIsRefusedBeforeItStarts) {
   const fs::path dir = fs::temp_directory_path() / ("ejecta_chain_thermal_err_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   ejecta::test::TinyImpact o;
   o.dimension = "2d";
   o.extra = "[thermal]\nstudy = \"thermal/follower\"\n";
-  writeFile(dir / "planar.toml", ejecta::test::tinyImpactScene(o));
+  writeTextFile(dir / "planar.toml", ejecta::test::tinyImpactScene(o));
   std::string out;
-  EXPECT_NE(run(kEjecta + " run " + (dir / "planar.toml").string() + " --quiet --out " + (dir / "p").string(), out), 0);
+  EXPECT_NE(runCommand(kEjecta + " run " + (dir / "planar.toml").string() + " --quiet --out " + (dir / "p").string(), out), 0);
   EXPECT_NE(out.find("planar.toml"), std::string::npos) << out;
   EXPECT_NE(out.find("no 3D extent"), std::string::npos) << out;
   EXPECT_FALSE(fs::exists(dir / "p" / "summary.json"));
 
   o.dimension = "rz";
   o.extra = "[thermal]\nstudy = \"no_such_study.toml\"\n";
-  writeFile(dir / "missing.toml", ejecta::test::tinyImpactScene(o));
-  EXPECT_NE(run(kEjecta + " run " + (dir / "missing.toml").string() + " --quiet --out " + (dir / "m").string(), out), 0);
+  writeTextFile(dir / "missing.toml", ejecta::test::tinyImpactScene(o));
+  EXPECT_NE(runCommand(kEjecta + " run " + (dir / "missing.toml").string() + " --quiet --out " + (dir / "m").string(), out), 0);
   EXPECT_NE(out.find("key 'thermal.study'"), std::string::npos) << out;
   EXPECT_NE(out.find("no_such_study.toml"), std::string::npos) << out;
   fs::remove_all(dir);
