@@ -128,26 +128,32 @@ TEST(ProgrammedBurn, BurnFractionRampsOverOneAndAHalfSpacingsAndNeverFalls) {
   EXPECT_EQ(p.P[0], 1e10);
 }
 
-// LS-DYNA's beta burn: explosive compressed before the front reaches it burns by its compression,
-// F2 = (1 - V) / (1 - V_CJ), and is fully burnt at the C-J density.
+// LS-DYNA's beta burn: explosive compressed just before the front reaches it burns by its
+// compression, F2 = (1 - V) / (1 - V_CJ), and is fully burnt at the C-J density; further ahead of
+// the front than one ramp width it does not (SPH's smoothing would light a burn running ahead).
 TEST(ProgrammedBurn, CompressionAheadOfTheFrontBurnsByBeta) {
   ParticleSet p;
-  const double rho0 = 1630.0;
+  const double rho0 = 1630.0, D = 6930.0, eta = 2.0;  // h = 2 mm: ramp width 1.5 mm
   p.append({0, 0, 0}, {0, 0, 0}, 1.0, rho0, 4e6, 0.002, 0);
   p.enableBurn();
-  p.lightingTime[0] = 1e-3;  // the front is far away
   p.burnFraction[0] = 0.0;
-  const BurnTable burn{{6930.0}, {rho0}, {0.75}};
+  const BurnTable burn{{D}, {rho0}, {0.75}};
   p.rho[0] = rho0 / 0.9;  // V = 0.9: F2 = 0.1 / 0.25
   p.P.assign(1, 1e10);
-  applyProgrammedBurn(p, burn, 2.0, 0.0);
+  p.lightingTime[0] = 2e-3 / D;  // the front 2 mm away: beyond the window
+  applyProgrammedBurn(p, burn, eta, 0.0);
+  EXPECT_EQ(p.burnFraction[0], 0.0);
+  EXPECT_EQ(p.P[0], 0.0);
+  p.P[0] = 1e10;
+  p.lightingTime[0] = 1e-3 / D;  // 1 mm away: inside it
+  applyProgrammedBurn(p, burn, eta, 0.0);
   EXPECT_NEAR(p.burnFraction[0], 0.4, 1e-12);
   EXPECT_NEAR(p.P[0], 0.4e10, 1e-2);
   p.rho[0] = rho0;  // expanding back does not un-burn
-  applyProgrammedBurn(p, burn, 2.0, 0.0);
+  applyProgrammedBurn(p, burn, eta, 0.0);
   EXPECT_NEAR(p.burnFraction[0], 0.4, 1e-12);
   p.rho[0] = rho0 / 0.7;  // beyond the C-J density: fully burnt
-  applyProgrammedBurn(p, burn, 2.0, 0.0);
+  applyProgrammedBurn(p, burn, eta, 0.0);
   EXPECT_EQ(p.burnFraction[0], 1.0);
 }
 
