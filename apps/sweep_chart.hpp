@@ -34,35 +34,9 @@ inline std::optional<std::vector<std::string>> vectorComponents(const std::strin
   const auto b = text.find_first_not_of(" \t");
   const auto e = text.find_last_not_of(" \t");
   if (b == std::string::npos || text[b] != '[' || text[e] != ']') return std::nullopt;
-  std::vector<std::string> parts;
-  std::string current;
-  int depth = 0;
-  char quote = 0;
-  auto flush = [&] {
-    const auto cb = current.find_first_not_of(" \t");
-    parts.push_back(cb == std::string::npos
-                        ? std::string()
-                        : current.substr(cb, current.find_last_not_of(" \t") - cb + 1));
-    current.clear();
-  };
-  for (std::size_t i = b + 1; i < e; ++i) {
-    const char c = text[i];
-    if (quote) {
-      if (c == quote) quote = 0;
-    } else if (c == '"' || c == '\'') {
-      quote = c;
-    } else if (c == '[' || c == '{') {
-      ++depth;
-    } else if (c == ']' || c == '}') {
-      --depth;
-    } else if (c == ',' && depth == 0) {
-      flush();
-      continue;
-    }
-    current += c;
-  }
-  flush();
-  if (parts.size() == 1 && parts.front().empty()) parts.clear();
+  auto parts = splitOutsideBrackets(text.substr(b + 1, e - b - 1));
+  if (!parts) return std::nullopt;
+  if (parts->size() == 1 && parts->front().empty()) parts->clear();
   return parts;
 }
 

@@ -1,5 +1,6 @@
 #include "sim/sweep.hpp"
 
+#include <optional>
 #include <stdexcept>
 
 namespace ejecta {
@@ -14,17 +15,12 @@ std::string trim(const std::string& s) {
 
 }  // namespace
 
-SweepAxis parseSweepAxis(const std::string& text) {
-  const auto eq = text.find('=');
-  if (eq == std::string::npos || eq == 0)
-    throw std::invalid_argument("--vary '" + text + "': expected key=v1,v2,...");
-  SweepAxis axis;
-  axis.key = trim(text.substr(0, eq));
-  // Split on commas outside brackets and quotes.
+std::optional<std::vector<std::string>> splitOutsideBrackets(const std::string& text) {
+  std::vector<std::string> parts;
   std::string current;
   int depth = 0;
   char quote = 0;
-  for (char c : text.substr(eq + 1)) {
+  for (char c : text) {
     if (quote) {
       if (c == quote) quote = 0;
     } else if (c == '"' || c == '\'') {
@@ -34,15 +30,26 @@ SweepAxis parseSweepAxis(const std::string& text) {
     } else if (c == ']' || c == '}') {
       --depth;
     } else if (c == ',' && depth == 0) {
-      axis.values.push_back(trim(current));
+      parts.push_back(trim(current));
       current.clear();
       continue;
     }
     current += c;
   }
-  if (quote || depth != 0)
-    throw std::invalid_argument("--vary '" + text + "': unbalanced brackets or quotes");
-  axis.values.push_back(trim(current));
+  if (quote || depth != 0) return std::nullopt;
+  parts.push_back(trim(current));
+  return parts;
+}
+
+SweepAxis parseSweepAxis(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw std::invalid_argument("--vary '" + text + "': expected key=v1,v2,...");
+  SweepAxis axis;
+  axis.key = trim(text.substr(0, eq));
+  const auto values = splitOutsideBrackets(text.substr(eq + 1));
+  if (!values) throw std::invalid_argument("--vary '" + text + "': unbalanced brackets or quotes");
+  axis.values = *values;
   for (const std::string& v : axis.values)
     if (v.empty()) throw std::invalid_argument("--vary '" + text + "': an empty value");
   return axis;

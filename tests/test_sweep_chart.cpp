@@ -95,5 +95,21 @@ TEST(SweepChart, ValuesAndLabels) {
   EXPECT_EQ(sweepVariantLabel({"[0.0, \"26.53 m\"]", "100 kt"}), "[0.0, 26.53 m]; 100 kt");
 }
 
+// --vary parsing: values split on commas outside brackets and quotes; axes zip.
+TEST(SweepAxes, ValuesSplitOutsideBracketsAndQuotes) {
+  const SweepAxis a = parseSweepAxis("detonations[0].point = [0.0, \"-2 m\"], [0.0, \"-3 m\"]");
+  EXPECT_EQ(a.key, "detonations[0].point");
+  EXPECT_EQ(a.values, (std::vector<std::string>{"[0.0, \"-2 m\"]", "[0.0, \"-3 m\"]"}));
+  EXPECT_EQ(parseSweepAxis("x=\"1,5 m\",2").values, (std::vector<std::string>{"\"1,5 m\"", "2"}));
+  EXPECT_FALSE(splitOutsideBrackets("[1, 2").has_value());
+  EXPECT_THROW(parseSweepAxis("x=[1, 2"), std::invalid_argument);
+  EXPECT_THROW(parseSweepAxis("x=1,,2"), std::invalid_argument);
+  EXPECT_THROW(parseSweepAxis("=1,2"), std::invalid_argument);
+  const auto variants = sweepVariants({parseSweepAxis("a=1,2"), parseSweepAxis("b=x,y")});
+  ASSERT_EQ(variants.size(), 2u);
+  EXPECT_EQ(variants[1], (std::vector<std::string>{"a=2", "b=y"}));
+  EXPECT_THROW(sweepVariants({parseSweepAxis("a=1,2"), parseSweepAxis("b=x")}), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace ejecta::app
