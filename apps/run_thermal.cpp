@@ -88,6 +88,18 @@ std::string fixed(double x, int digits) {
   return buffer;
 }
 
+// The thickest coating of `coating` any sized face needs [m]; NaN when one cannot be protected.
+double thickestCoating(const radiation::ThermalResult& r, const std::string& coating) {
+  double thickness = 0.0;
+  for (const radiation::PatchThermal& p : r.patches)
+    for (const radiation::ShieldSizing& s : p.sizing)
+      if (s.material == coating) {
+        if (!s.feasible) return std::numeric_limits<double>::quiet_NaN();
+        thickness = std::max(thickness, s.thickness);
+      }
+  return thickness;
+}
+
 // The lightest coating that keeps every sized face's structure within its limit, as one line.
 std::string recommendation(const radiation::ThermalResult& r) {
   const radiation::PatchThermal* hottest = nullptr;
@@ -102,13 +114,9 @@ std::string recommendation(const radiation::ThermalResult& r) {
   double bestThickness = 0.0;
   for (const auto& [coating, mass] : r.totalAddedMass) {
     if (!std::isfinite(mass) || mass >= bestMass) continue;
-    double thickness = 0.0;
-    for (const radiation::PatchThermal& p : r.patches)
-      for (const radiation::ShieldSizing& s : p.sizing)
-        if (s.material == coating) thickness = std::max(thickness, s.thickness);
     best = coating;
     bestMass = mass;
-    bestThickness = thickness;
+    bestThickness = thickestCoating(r, coating);
   }
   if (best.empty())
     return r.totalAddedMass.empty() ? "no coatings sized"
@@ -139,14 +147,7 @@ void addSummary(const Pass& pass, const std::string& outDir, RunSummary& summary
   }
   x.push_back({"thermal_faces", faces});
   for (const auto& [coating, mass] : r.totalAddedMass) {
-    // The thickest any sized face needs (NaN when one cannot be protected).
-    double thickness = 0.0;
-    for (const radiation::PatchThermal& p : r.patches)
-      for (const radiation::ShieldSizing& s : p.sizing)
-        if (s.material == coating)
-          thickness = s.feasible ? std::max(thickness, s.thickness)
-                                 : std::numeric_limits<double>::quiet_NaN();
-    x.push_back({"thermal_shield_" + coating + "_mm", thickness * 1e3});
+    x.push_back({"thermal_shield_" + coating + "_mm", thickestCoating(r, coating) * 1e3});
     x.push_back({"thermal_shield_" + coating + "_kg", mass});
   }
   x.push_back({"thermal_shield", recommendation(r)});
@@ -180,6 +181,13 @@ void writePassCharts(const Pass& pass, const fs::path& dir, const std::string& n
   charts.writeChart(temps);
 }
 
+// A pass that failed: a note for the summary and a line on stderr; the run goes on.
+void noteFailure(PassLog& log, const char* atOrFrom, double time, const std::exception& e) {
+  const std::string what = std::string("thermal pass ") + atOrFrom + " t = " + fixed(time * 1e3, 3) +
+                           " ms failed: " + e.what();
+  log.notes.push_back(what);
+  std::fprintf(stderr, "ejecta: %s\n", what.c_str());
+}
 
 // What every pass needs, fixed for the run.
 struct PassContext {
@@ -202,8 +210,7 @@ void finishPass(const PassContext& c, PassLog& log, Pass pass,
     pass.result = radiation::runThermalStudy(*c.study, frames);
     writeThermalOutputs(c.outDir / pass.dir, *c.study, pass.result, sourceJson + ",\n" + occluderText);
   } catch (const std::exception& e) {
-    log.notes.push_back("thermal pass at t = " + fixed(pass.time * 1e3, 3) + " ms failed: " + e.what());
-    std::fprintf(stderr, "ejecta: thermal pass at t = %g s failed: %s\n", pass.time, e.what());
+    noteFailure(log, pass.evolving ? "from" : "at", pass.time, e);
     return;
   }
   pass.hottestFace = hottestSteadyFace(pass.result);
@@ -228,7 +235,10 @@ void finishPass(const PassContext& c, PassLog& log, Pass pass,
 }
 
 // A pass over the material of one output, frozen during the pass.
-void snapshotPass(const PassContext& c, PassLog& log, const Simulation& sim, const SnapshotInfo& info) {
+// `gridsNow`: this output wrote a grid file; only its surface occludes, as `ejecta thermal --from`
+// the snapshot does.
+void snapshotPass(const PassContext& c, PassLog& log, const Simulation& sim, const SnapshotInfo& info,
+                  bool gridsNow) {
   Pass pass;
   pass.time = info.time;
   char dirName[32];
@@ -237,7 +247,7 @@ void snapshotPass(const PassContext& c, PassLog& log, const Simulation& sim, con
   try {
     const auto emitters = std::make_shared<const radiation::Emitters>(
         emittersFromParticles(sim.particles(), c.geometry, c.emitterOptions, &pass.stats));
-    const radiation::TriangleMesh* occluder = log.surface.current(c.occluderOptions);
+    const radiation::TriangleMesh* occluder = gridsNow ? log.surface.current(c.occluderOptions) : nullptr;
     pass.occluderTriangles = occluder ? occluder->triangleCount() : 0;
     const std::vector<radiation::PassFrame> frames(c.study->approach.times().size(),
                                                    {emitters.get(), occluder});
@@ -246,8 +256,7 @@ void snapshotPass(const PassContext& c, PassLog& log, const Simulation& sim, con
         occluderJson(occluder ? &log.surface.meshedFile : nullptr, c.occluderOptions, log.surface.stats);
     finishPass(c, log, std::move(pass), frames, source, occluderText, sim, std::nullopt);
   } catch (const std::exception& e) {
-    log.notes.push_back("thermal pass at t = " + fixed(info.time * 1e3, 3) + " ms failed: " + e.what());
-    std::fprintf(stderr, "ejecta: thermal pass at t = %g s failed: %s\n", info.time, e.what());
+    noteFailure(log, "at", info.time, e);
   }
 }
 
@@ -256,22 +265,23 @@ void snapshotPass(const PassContext& c, PassLog& log, const Simulation& sim, con
 // last frame.
 void advanceEvolvingPasses(const PassContext& c, PassLog& log, const Simulation& sim, bool padding) {
   const std::vector<double> samples = c.study->approach.times();
+  std::shared_ptr<const radiation::Emitters> now;  // this step's, made when first needed
+  SnapshotEmitterStats nowStats;
   for (std::size_t k = 0; k < log.open.size();) {
     OpenPass& open = log.open[k];
     try {
       while (open.emitters.size() < samples.size() &&
              sim.time() >= (open.start + samples[open.emitters.size()]) * (1.0 - 1e-12)) {
-        SnapshotEmitterStats stats;
-        // Several sample times within one step share its material.
-        auto emitters = std::make_shared<const radiation::Emitters>(
-            emittersFromParticles(sim.particles(), c.geometry, c.emitterOptions, &stats));
-        if (stats.emitters >= open.largest.emitters) open.largest = stats;
+        // Every sample time this step reaches, of every open pass, shares its material.
+        if (!now) now = std::make_shared<const radiation::Emitters>(
+                      emittersFromParticles(sim.particles(), c.geometry, c.emitterOptions, &nowStats));
+        if (nowStats.emitters >= open.largest.emitters) open.largest = nowStats;
         const radiation::TriangleMesh* occluder = log.surface.current(c.occluderOptions);
-        open.emitters.push_back(emitters);
+        open.emitters.push_back(now);
         open.occluders.push_back(occluder ? log.surface.mesh : nullptr);
       }
     } catch (const std::exception& e) {
-      log.notes.push_back("thermal pass from t = " + fixed(open.start * 1e3, 3) + " ms failed: " + e.what());
+      noteFailure(log, "from", open.start, e);
       log.open.erase(log.open.begin() + static_cast<std::ptrdiff_t>(k));
       continue;
     }
@@ -368,7 +378,8 @@ void addThermalOutputs(RunOptions& options, const Scene& scene, bool charts) {
     char gridName[40];
     std::snprintf(gridName, sizeof gridName, "fields_%04ld.vdb", info.snapshotIndex);
     const fs::path gridFile = context->outDir / "fields" / gridName;
-    if (fs::exists(gridFile)) log->surface.latestFile = gridFile.string();
+    const bool gridsNow = fs::exists(gridFile);
+    if (gridsNow) log->surface.latestFile = gridFile.string();
     if (wanted.evolving) {
       if (final) advanceEvolvingPasses(*context, *log, sim, true);
       return;
@@ -393,7 +404,7 @@ void addThermalOutputs(RunOptions& options, const Scene& scene, bool charts) {
       log->nextTime = wanted.times.size();
       due = true;
     }
-    if (due) snapshotPass(*context, *log, sim, info);
+    if (due) snapshotPass(*context, *log, sim, info, gridsNow);
   };
 
   if (wanted.evolving) {

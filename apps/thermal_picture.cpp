@@ -5,6 +5,7 @@
 
 #include "apps/particle_images.hpp"
 #include "radiation/geometry_file.hpp"
+#include "render/color_scale.hpp"
 #include "render/png_io.hpp"
 
 namespace ejecta::app {
@@ -28,14 +29,6 @@ double peakFluxTime(const radiation::ThermalResult& result) {
       time = p.peakTime;
     }
   return time;
-}
-
-double percentile(std::vector<double> v, double q) {
-  std::erase_if(v, [](double x) { return !(std::isfinite(x) && x > 0.0); });
-  if (v.empty()) return 0.0;
-  const auto k = static_cast<std::ptrdiff_t>(std::floor(q * static_cast<double>(v.size() - 1)));
-  std::nth_element(v.begin(), v.begin() + k, v.end());
-  return v[static_cast<std::size_t>(k)];
 }
 
 }  // namespace
@@ -89,8 +82,13 @@ void writeThermalPicture(render::Renderer& renderer, const ParticleSet& particle
       particleLayer(particles, geometry, {.field = "temperature", .log = true, .cut = "z", .title = ""}, temperature);
   // One scale for the rock and the faces, so their colours compare.
   const double faceMax = *std::max_element(faceTemperature.begin(), faceTemperature.end());
-  hot.scale.min = std::max(1.0, percentile(temperature, 0.0));
-  hot.scale.max = std::max({percentile(temperature, 0.995), faceMax, *hot.scale.min * 10.0});
+  // The rock's robust range on a log scale (render's own percentiles), widened to the faces.
+  render::ColorScaleSpec robust;
+  robust.kind = render::ScaleKind::Log;
+  robust.highPercentile = 99.5;
+  const render::ColorScale rock = render::resolveScale(robust, temperature);
+  hot.scale.min = rock.min();
+  hot.scale.max = std::max({rock.max(), faceMax, rock.min() * 10.0});
   hot.scale.map = render::ColorMapName::Inferno;
 
   const double size = std::max(mesh.boundingRadius(), 1e-3);
