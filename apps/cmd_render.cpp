@@ -1,6 +1,8 @@
 // `ejecta render SNAPSHOT.h5|FILE.vdb|RUN_DIR`: a PNG of the particles coloured by a field, or of
 // a grid file: a slice of a grid, or an iso-surface (apps/grid_images.hpp).
 #include <algorithm>
+#include <array>
+#include <optional>
 #include <charconv>
 #include <cstdio>
 #include <filesystem>
@@ -84,6 +86,48 @@ GridSliceImageOptions parseSlice(const std::string& text) {
   return o;
 }
 
+// "x,y,z": three numbers, or quantities of `dimension` ("0, -60 m, 20 m").
+std::array<double, 3> parseTriple(const std::string& text, Dimension dimension, const std::string& option) {
+  std::array<double, 3> out{};
+  std::size_t start = 0;
+  for (int k = 0; k < 3; ++k) {
+    const std::size_t comma = text.find(',', start);
+    if ((k < 2) != (comma != std::string::npos))
+      throw std::invalid_argument(option + " '" + text + "': expected three components X,Y,Z");
+    std::string part = text.substr(start, k < 2 ? comma - start : std::string::npos);
+    part.erase(0, part.find_first_not_of(' '));
+    part.erase(part.find_last_not_of(' ') + 1);
+    out[static_cast<std::size_t>(k)] = parseValue(part, dimension, option);
+    start = comma + 1;
+  }
+  return out;
+}
+
+// --camera/--target/--up/--fov as a camera; none without --camera.
+std::optional<render::Camera> cameraOf(const RenderArgs& args) {
+  if (args.cameraPosition.empty()) {
+    if (!args.cameraTarget.empty() || !args.cameraUp.empty())
+      throw std::invalid_argument("--target and --up aim a camera: give its position with --camera X,Y,Z");
+    return std::nullopt;
+  }
+  if (args.cameraTarget.empty())
+    throw std::invalid_argument("--camera needs --target X,Y,Z: where the camera looks");
+  ImageCamera c;
+  c.position = parseTriple(args.cameraPosition, Dimension::Length, "--camera");
+  c.target = parseTriple(args.cameraTarget, Dimension::Length, "--target");
+  if (!args.cameraUp.empty()) c.up = parseTriple(args.cameraUp, Dimension::None, "--up");
+  if (!(args.fovDegrees > 0.0 && args.fovDegrees < 180.0))
+    throw std::invalid_argument("--fov " + std::to_string(args.fovDegrees) + ": expected 0 to 180 degrees");
+  c.fovDegrees = args.fovDegrees;
+  return renderCamera(c);
+}
+
+std::optional<double> cutAtOf(const RenderArgs& args) {
+  if (args.cutAt.empty()) return std::nullopt;
+  if (args.cut == "none") throw std::invalid_argument("--cut-at moves the cut, but --cut is none");
+  return parseValue(args.cutAt, Dimension::Length, "--cut-at");
+}
+
 // " K", " kg/m^3"; nothing for a dimensionless grid ("1").
 std::string unitsText(const std::string& units) { return units.empty() || units == "1" ? "" : " " + units; }
 
@@ -103,6 +147,8 @@ int renderGridFile(const RenderArgs& args, const fs::path& file) {
   const bool hasSurface = std::find(names.begin(), names.end(), "surface") != names.end();
   // No choice made: the material surface when the file has one (3D and RZ runs), else a slice.
   const bool iso = !args.iso.empty() || !args.colorBy.empty() || (args.slice.empty() && args.grid.empty() && hasSurface);
+  if (!iso && (!args.cameraPosition.empty() || !args.cutAt.empty()))
+    throw std::invalid_argument("--camera and --cut-at are for iso-surfaces and 3D particles; a slice is drawn in its plane");
   render::Renderer renderer({.width = args.size, .height = args.size});
 
   if (iso) {
@@ -117,6 +163,8 @@ int renderGridFile(const RenderArgs& args, const fs::path& file) {
     o.colorBy = args.colorBy;
     o.log = args.log;
     if (!args.cut.empty()) o.cut = args.cut;
+    o.cutAt = cutAtOf(args);
+    o.camera = cameraOf(args);
     const fs::path out = args.out.empty() ? fs::path("iso_" + o.grid + ".png") : fs::path(args.out);
     const GridImageSummary s = writeIsoSurfaceImage(renderer, file, o, out);
     std::printf("ejecta: %s = %.6g%s of %s (t = %.6g s): %zu triangles", s.grid.c_str(), s.isovalue,
@@ -162,12 +210,17 @@ int renderCommand(const RenderArgs& args) {
   if (!args.field.empty()) options.field = args.field;
   options.log = args.log;
   if (!args.cut.empty()) options.cut = args.cut;
+  options.cutAt = cutAtOf(args).value_or(0.0);
+  options.camera = cameraOf(args);
   Geometry geometry = info.geometry;
   if (args.view == "plane") geometry = Geometry::Planar;
   else if (args.view == "rz") geometry = Geometry::Axisymmetric;
   else if (args.view == "3d") geometry = Geometry::Spatial;
   else if (!args.view.empty() && args.view != "auto")
     throw std::invalid_argument("--view '" + args.view + "': expected auto, plane, rz or 3d");
+  if (spatialDimension(geometry) != 3 && (options.camera || !args.cutAt.empty()))
+    throw std::invalid_argument("--camera and --cut-at are for 3D pictures; " + snapshot.filename().string() +
+                                " is drawn as a plane section (--view 3d to draw it in 3D)");
   const fs::path out = args.out.empty() ? fs::path(options.field + ".png") : fs::path(args.out);
   if (args.size < 64 || args.size > 8192)
     throw std::invalid_argument("--size " + std::to_string(args.size) + ": expected 64 to 8192 pixels");

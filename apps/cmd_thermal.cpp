@@ -17,6 +17,7 @@
 #include "apps/grid_emitters.hpp"
 #include "apps/snapshot_emitters.hpp"
 #include "apps/surface_occluder.hpp"
+#include "apps/thermal_charts.hpp"
 #include "apps/thermal_outputs.hpp"
 #include "radiation/thermal_study.hpp"
 #include "sim/run.hpp"
@@ -164,13 +165,26 @@ int thermalCommand(const ThermalArgs& args) {
   const fs::path out = args.outDir.empty() ? defaultOutDir(input, study.name) : fs::path(args.outDir);
   const std::string json = writeThermalOutputs(out, study, result, sourceJson + ",\n" + occluderText);
 
+  // Charts beside the CSVs when matplotlib is there; a failed chart costs only the chart.
+  std::string chartsText;
+  render::ChartRunner charts;
+  if (!args.noCharts && charts.chartsAvailable()) {
+    try {
+      for (const std::string& c : writeThermalCharts(charts, result, out, study.name))
+        chartsText += (chartsText.empty() ? "" : ", ") + c;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "ejecta: thermal charts failed: %s\n", e.what());
+    }
+  }
+
   if (args.json) {
     std::fputs(json.c_str(), stdout);
   } else {
     std::fputs(sourceText.c_str(), stdout);
     std::fputs(radiation::formatThermalText(result).c_str(), stdout);
-    std::printf("wrote %s/{flux.csv, wall_<patch>.csv%s, thermal.json}\n", out.string().c_str(),
-                study.sizing.coatings.empty() ? "" : ", sizing.csv");
+    std::printf("wrote %s/{flux.csv, wall_<patch>.csv%s, thermal.json%s%s}\n", out.string().c_str(),
+                study.sizing.coatings.empty() ? "" : ", sizing.csv", chartsText.empty() ? "" : ", ",
+                chartsText.c_str());
   }
   return 0;
 }

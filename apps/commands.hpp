@@ -24,7 +24,9 @@ struct VerifyArgs {
   int threads = 0;
   std::vector<std::string> overrides;  // applied to the problem's scene
   int resolutions = 0;                 // 0 = the problem's default
-  std::string outDir;                  // optional: write the problem's profile CSVs here
+  std::string outDir;                  // optional: the profile CSVs, the convergence table and
+                                       // their charts (apps/verify_charts.hpp) go here
+  bool noCharts = false;               // CSVs only
 };
 int verifyCommand(const VerifyArgs& args);
 
@@ -60,6 +62,11 @@ struct ViewfactorArgs {
   long long rays = 0;                  // --rays N (0: the file's [sampling])
   double tolerance = 0.0;              // --tol T, absolute on view factors (0: the file's)
   bool json = false;
+  // --convergence DIR: the geometry at minRays, 4 x minRays, ... maxRays; the table and charts
+  // go to DIR (radiation/view_factor_convergence.hpp).
+  std::string convergenceDir;
+  long long minRays = 4096, maxRays = 4194304;
+  bool noCharts = false;
 };
 int viewfactorCommand(const ViewfactorArgs& args);
 
@@ -71,6 +78,7 @@ struct ThermalArgs {
   std::string emitters;                // particles | voxels; default particles (voxels for a .vdb)
   bool occlude = false, noOcclude = false;  // neither: occlude when the output has a surface grid
   double occluderInset = 1.5;          // voxels inside the surface (apps/surface_occluder.hpp)
+  bool noCharts = false;               // CSVs only (apps/thermal_charts.hpp)
 };
 int thermalCommand(const ThermalArgs& args);
 
@@ -83,6 +91,11 @@ struct RenderArgs {
   int size = 1024;                     // pixels
   bool log = false;                    // log colour scale
   std::string cut;                     // 3D and iso-surfaces: none | x | y | z (keep the <= 0 half)
+  std::string cutAt;                   // where the cut is: a length ("2.5 m")
+  // 3D and iso-surfaces: the camera, "x,y,z" in metres (or with units: "0,-60 m,20 m"), and its
+  // vertical field of view [degrees]; no position: the automatic camera.
+  std::string cameraPosition, cameraTarget, cameraUp;
+  double fovDegrees = 30.0;
   // Grid files (apps/grid_images.hpp): a slice of `grid` on a plane, or an iso-surface.
   std::string grid;                    // the grid to slice (default density)
   std::string slice;                   // x | y | z, optionally =VALUE ("z=2.5 m")

@@ -233,7 +233,7 @@ GridImageSummary writeIsoSurfaceImage(render::Renderer& renderer, const std::fil
   std::optional<double> cutAt;
   if (axis >= 0) {
     const auto a = static_cast<std::size_t>(axis);
-    cutAt = lo[a] < 0.0 && hi[a] > 0.0 ? 0.0 : 0.5 * (lo[a] + hi[a]);
+    cutAt = options.cutAt ? *options.cutAt : lo[a] < 0.0 && hi[a] > 0.0 ? 0.0 : 0.5 * (lo[a] + hi[a]);
   }
 
   render::MeshLayer surface;
@@ -332,6 +332,11 @@ GridImageSummary writeIsoSurfaceImage(render::Renderer& renderer, const std::fil
   // to fit the vertical field of view (the narrower: the strip makes the picture wider than
   // tall), with the renderer's 2% to spare.
   const Box kept = boxOf(mesh.vertices, axis, cutAt.value_or(0.0));
+  if (kept.lo[0] > kept.hi[0])
+    throw std::invalid_argument(path + ": the cut at " + std::string(kAxisNames[axis]) + " = " +
+                                number(*cutAt) + " m keeps none of the surface (it spans " +
+                                number(lo[static_cast<std::size_t>(axis)]) + " to " +
+                                number(hi[static_cast<std::size_t>(axis)]) + " m)");
   const render::Vec3 centre{0.5 * (kept.lo[0] + kept.hi[0]), 0.5 * (kept.lo[1] + kept.hi[1]),
                             0.5 * (kept.lo[2] + kept.hi[2])};
   double radius = 0.0;
@@ -350,7 +355,7 @@ GridImageSummary writeIsoSurfaceImage(render::Renderer& renderer, const std::fil
     camera.position[d] = centre[d] + distance * direction[d];
   }
   camera.target = centre;
-  view.camera = camera;
+  view.camera = options.camera ? *options.camera : camera;
   if (cutAt) {
     render::ClipPlane plane;
     plane.normal = {0.0, 0.0, 0.0};
@@ -373,6 +378,12 @@ GridImageSummary writeIsoSurfaceImage(render::Renderer& renderer, const std::fil
   addFraming(s, frame);
   s.cameraDistance = distance;
   s.target = centre;
+  if (options.camera) {
+    const render::Camera& c = *options.camera;
+    s.cameraDistance = std::hypot(c.target[0] - c.position[0], c.target[1] - c.position[1],
+                                  c.target[2] - c.position[2]);
+    s.target = c.target;
+  }
   return s;
 }
 

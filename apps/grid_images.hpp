@@ -34,9 +34,12 @@ struct IsoSurfaceImageOptions {
   // one plain colour.
   std::string colorBy;
   bool log = false;              // colorBy on a log scale
-  // Keep the half x, y or z <= c of the picture, c = 0 when the surface spans it, else its
-  // middle; "none": the whole surface.
+  // Keep the half x, y or z <= c of the picture, c = cutAt when given, else 0 when the surface
+  // spans it, else its middle; "none": the whole surface.
   std::string cut = "z";
+  std::optional<double> cutAt;    // [m]
+  // The camera; none: one that looks at what the cut keeps from its open side and frames it.
+  std::optional<render::Camera> camera;
   std::string title;             // default "<scene>: <grid> = <isovalue> <units>"
 };
 

@@ -30,7 +30,8 @@ int main(int argc, char** argv) {
   verifyCmd->add_option("--threads,-j", verify.threads, "OpenMP threads");
   verifyCmd->add_option("--set", verify.overrides, "Override a key of the problem's scene")->take_all();
   verifyCmd->add_option("--resolutions", verify.resolutions, "Number of resolutions for the convergence study");
-  verifyCmd->add_option("--out,-o", verify.outDir, "Write profiles (CSV) here");
+  verifyCmd->add_option("--out,-o", verify.outDir, "Write profiles, the convergence table (CSV) and their charts (PNG) here");
+  verifyCmd->add_flag("--no-charts", verify.noCharts, "With --out: the CSVs only");
 
   ejecta::app::FieldsArgs fieldsArgs;
   CLI::App* fieldsCmd = app.add_subcommand("fields", "Grid a snapshot's particles into sparse OpenVDB grids");
@@ -66,6 +67,12 @@ int main(int argc, char** argv) {
   vfCmd->add_option("--tol", vfArgs.tolerance, "Absolute tolerance on view factors (adaptive ray count)")
       ->excludes(raysOpt);
   vfCmd->add_flag("--json", vfArgs.json, "Print the report as JSON");
+  auto* convergenceOpt = vfCmd->add_option("--convergence", vfArgs.convergenceDir,
+                                           "Cast at 4x more rays per step and write the error against rays and time (CSV, charts) here")
+                             ->excludes(raysOpt);
+  vfCmd->add_option("--min-rays", vfArgs.minRays, "With --convergence: the first ray count (default 4096)")->needs(convergenceOpt);
+  vfCmd->add_option("--max-rays", vfArgs.maxRays, "With --convergence: the last ray count (default 4194304)")->needs(convergenceOpt);
+  vfCmd->add_flag("--no-charts", vfArgs.noCharts, "With --convergence: the CSV only");
 
   ejecta::app::ThermalArgs thermalArgs;
   CLI::App* thermalCmd = app.add_subcommand("thermal", "Flux on a spacecraft's faces from hot crater material, wall temperatures and shield sizing");
@@ -76,6 +83,7 @@ int main(int argc, char** argv) {
   thermalCmd->add_option("--emitters", thermalArgs.emitters, "particles | voxels (the output's temperature grid); default particles, voxels for a .vdb");
   thermalCmd->add_flag("--occlude", thermalArgs.occlude, "The asteroid's surface (the grid file's level set) blocks rays (default when it exists)");
   thermalCmd->add_flag("--no-occlude", thermalArgs.noOcclude, "Nothing but the spacecraft blocks rays");
+  thermalCmd->add_flag("--no-charts", thermalArgs.noCharts, "Write the CSVs but no charts");
   thermalCmd->add_option("--occluder-inset", thermalArgs.occluderInset, "Voxels inside the surface where the occluder lies (default 1.5, 0-2)");
 
   ejecta::app::RenderArgs renderArgs;
@@ -87,6 +95,11 @@ int main(int argc, char** argv) {
   renderCmd->add_option("--size", renderArgs.size, "Image size in pixels (default 1024)");
   renderCmd->add_flag("--log", renderArgs.log, "Logarithmic colour scale");
   renderCmd->add_option("--cut", renderArgs.cut, "3D particles and iso-surfaces: none | x | y | z (keep the half below 0)");
+  renderCmd->add_option("--cut-at", renderArgs.cutAt, "Where the cut is along its axis (\"2 m\"; default 0)");
+  renderCmd->add_option("--camera", renderArgs.cameraPosition, "3D: the camera's position X,Y,Z [m] (default: an automatic camera)");
+  renderCmd->add_option("--target", renderArgs.cameraTarget, "3D: where the camera looks, X,Y,Z [m] (default: the centre of what is drawn)");
+  renderCmd->add_option("--up", renderArgs.cameraUp, "3D: the camera's up direction X,Y,Z (default 0,0,1)");
+  renderCmd->add_option("--fov", renderArgs.fovDegrees, "3D: the camera's vertical field of view [degrees] (default 30)");
   renderCmd->add_option("--grid,-g", renderArgs.grid, "Grid file: the grid to slice (default density)");
   renderCmd->add_option("--slice", renderArgs.slice, "Grid file: the plane x|y|z[=VALUE] (default z, at 0 or the grid's middle)");
   renderCmd->add_option("--iso", renderArgs.iso, "Grid file: the iso-surface GRID[=VALUE] (default surface=0)");

@@ -31,15 +31,33 @@ render::ParticleLayer particleLayer(const ParticleSet& p, Geometry geometry,
   return layer;
 }
 
+render::Camera renderCamera(const ImageCamera& camera) {
+  render::Camera c;
+  c.position = camera.position;
+  c.target = camera.target;
+  c.up = camera.up;
+  c.fovYDegrees = camera.fovDegrees;
+  return c;
+}
+
 render::View particleView(Geometry geometry, const std::string& cut) {
+  ParticleImageOptions options;
+  options.cut = cut;
+  return particleView(geometry, options);
+}
+
+render::View particleView(Geometry geometry, const ParticleImageOptions& options) {
   render::View view;
+  const std::string& cut = options.cut;
   if (geometry == Geometry::Axisymmetric) {
     view.kind = render::ViewKind::Axisymmetric;
   } else if (spatialDimension(geometry) == 3) {
     view.kind = render::ViewKind::Perspective;
+    view.camera = options.camera;
     if (cut == "x" || cut == "y" || cut == "z") {
       render::ClipPlane plane;
       plane.normal = {cut == "x" ? 1.0 : 0.0, cut == "y" ? 1.0 : 0.0, cut == "z" ? 1.0 : 0.0};
+      plane.offset = options.cutAt;
       view.clipPlanes.push_back(plane);
     } else if (cut != "none") {
       throw std::invalid_argument("cut '" + cut + "': expected none, x, y or z");
@@ -58,7 +76,7 @@ void writeParticleImage(render::Renderer& renderer, const ParticleSet& p, Geomet
   scene.particles.push_back(particleLayer(p, geometry, options, values));
   scene.annotations.title = options.title.empty() ? sceneName + ": " + options.field : options.title;
   scene.annotations.time = time;
-  render::writePng(out, renderer.render(scene, particleView(geometry, options.cut)).image);
+  render::writePng(out, renderer.render(scene, particleView(geometry, options)).image);
 }
 
 }  // namespace ejecta::app

@@ -4,6 +4,7 @@
 // `ejecta run` writes for a scene's [images] table, and under the spacecraft in a thermal pass's
 // picture (apps/thermal_picture.hpp).
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,9 +17,14 @@ namespace ejecta::app {
 struct ParticleImageOptions {
   std::string field = "density";  // a field of sim/particle_fields.hpp
   bool log = false;
-  std::string cut = "z";          // 3D: keep the half with x, y or z <= 0 ("none": no cut)
+  std::string cut = "z";          // 3D: keep the half with x, y or z <= cutAt ("none": no cut)
+  double cutAt = 0.0;             // [m]
+  std::optional<render::Camera> camera;  // 3D; none: look at everything from above and aside
   std::string title;              // default: "<scene>: <field>"
 };
+
+// The scene file's [images.camera] as the renderer takes it.
+render::Camera renderCamera(const ImageCamera& camera);
 
 // The layer of the real particles coloured by `options.field`; its values live in `values`,
 // which must outlive the layer's use. Throws std::invalid_argument for an unknown field.
@@ -26,8 +32,10 @@ render::ParticleLayer particleLayer(const ParticleSet& p, Geometry geometry,
                                     const ParticleImageOptions& options,
                                     std::vector<double>& values);
 
-// The view that suits the geometry: a plane, RZ mirrored about the axis, or 3D from an automatic
-// camera cut in half. Throws std::invalid_argument for an unknown cut.
+// The view that suits the geometry: a plane, RZ mirrored about the axis, or 3D through the
+// options' camera (or an automatic one), cut in half. Throws std::invalid_argument for an unknown
+// cut.
+render::View particleView(Geometry geometry, const ParticleImageOptions& options);
 render::View particleView(Geometry geometry, const std::string& cut);
 
 // Draws the particles and writes the PNG atomically. Throws std::invalid_argument for an

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "apps/surface_occluder.hpp"
+#include "apps/thermal_charts.hpp"
 #include "apps/thermal_outputs.hpp"
 #include "apps/thermal_picture.hpp"
 #include "radiation/format_number.hpp"
@@ -151,34 +152,6 @@ void addSummary(const Pass& pass, const std::string& outDir, RunSummary& summary
     x.push_back({"thermal_shield_" + coating + "_kg", mass});
   }
   x.push_back({"thermal_shield", recommendation(r)});
-}
-
-// flux.png (each face's flux along the pass) and wall_<patch>.png for the hottest face.
-void writePassCharts(const Pass& pass, const fs::path& dir, const std::string& name) {
-  render::ChartRunner charts;
-  if (!charts.chartsAvailable()) return;
-  render::ChartSpec flux{.csv = dir / "flux.csv", .x = "time_s", .xlabel = "time in the pass [s]",
-                         .ylabel = "incident flux [W/m^2]",
-                         .title = name + ": flux on each face", .out = dir / "flux.png"};
-  for (const radiation::PatchThermal& p : pass.result.patches)
-    flux.series.push_back({.y = p.patch + "_W_m2", .label = p.patch, .markers = true});
-  charts.writeChart(flux);
-  const radiation::PatchThermal* hottest = nullptr;
-  for (const radiation::PatchThermal& p : pass.result.patches)
-    if (p.wall && (!hottest || p.peakFlux > hottest->peakFlux)) hottest = &p;
-  if (!hottest) return;
-  const radiation::LayeredWall& wall = hottest->wall->wall();
-  render::ChartSpec temps{.csv = dir / ("wall_" + hottest->patch + ".csv"), .x = "time_s",
-                          .series = {{.y = "hot_face_K", .label = "hot face"}},
-                          .xlabel = "time in the pass [s]", .ylabel = "temperature [K]",
-                          .title = name + ": wall of " + hottest->patch,
-                          .out = dir / ("wall_" + hottest->patch + ".png")};
-  for (std::size_t k = 0; k + 1 < wall.layerCount(); ++k)
-    temps.series.push_back({.y = "interface_" + std::to_string(k + 1) + "_K",
-                            .label = wall.layers()[k].material.name + " / " +
-                                     wall.layers()[k + 1].material.name});
-  temps.series.push_back({.y = "cold_face_K", .label = "cold face"});
-  charts.writeChart(temps);
 }
 
 // A pass that failed: a note for the summary and a line on stderr; the run goes on.
@@ -444,10 +417,11 @@ void addThermalOutputs(RunOptions& options, const Scene& scene, bool charts) {
     for (const Pass& p : log->passes)
       if (p.hottestFace > governing->hottestFace) governing = &p;
     addSummary(*governing, context->outDir.string(), summary);
+    render::ChartRunner chartRunner;
     for (const Pass& p : log->passes) {
-      if (!context->charts) break;
+      if (!context->charts || !chartRunner.chartsAvailable()) break;
       try {
-        writePassCharts(p, context->outDir / p.dir, context->sceneName);
+        writeThermalCharts(chartRunner, p.result, context->outDir / p.dir, context->sceneName);
       } catch (const std::exception& e) {
         notes += (notes.empty() ? "" : "; ") + std::string("thermal charts failed: ") + e.what();
         break;

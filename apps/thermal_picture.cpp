@@ -79,7 +79,7 @@ void writeThermalPicture(render::Renderer& renderer, const ParticleSet& particle
 
   std::vector<double> temperature;
   render::ParticleLayer hot =
-      particleLayer(particles, geometry, {.field = "temperature", .log = true, .cut = "z", .title = ""}, temperature);
+      particleLayer(particles, geometry, {.field = "temperature", .log = true, .cut = "z", .cutAt = 0.0, .camera = std::nullopt, .title = ""}, temperature);
   // One scale for the rock and the faces, so their colours compare.
   const double faceMax = *std::max_element(faceTemperature.begin(), faceTemperature.end());
   // The rock's robust range on a log scale (render's own percentiles), widened to the faces.

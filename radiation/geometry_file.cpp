@@ -29,7 +29,8 @@ using KeyList = std::vector<std::string_view>;
 const std::map<std::string_view, KeyList>& allowedKeys() {
   static const std::map<std::string_view, KeyList> keys = {
       {"", {"geometry", "spacecraft", "surfaces", "emitters", "hot_material", "occluder", "receivers",
-            "points", "sampling"}},
+            "points", "sampling", "references"}},
+      {"references[]", {"from", "to", "value", "source"}},
       {"geometry", {"name", "description"}},
       {"spacecraft", {"shape", "size", "radius", "length", "segments", "sectors", "mesh", "patch", "scale",
                       "position", "forward", "up", "rotation_axis", "rotation_angle", "velocity", "times"}},
@@ -504,6 +505,18 @@ GeometryConfig validate(const toml::table& root, const Context& ctx) {
     c.points.push_back({t.string("name"), t.vector("position"), t.direction("normal", {0, 0, 1})});
   }
   if (const toml::table* s = top.optTable("sampling")) c.sampling = readSampling(Table(ctx, *s, "sampling", "sampling"));
+  const auto references = top.tableArray("references");
+  for (std::size_t i = 0; i < references.size(); ++i) {
+    const Table t(ctx, *references[i], "references[" + std::to_string(i) + "]", "references[]");
+    ReferenceFactor r;
+    r.from = t.string("from");
+    r.to = t.string("to");
+    r.value = t.number("value");
+    if (!(r.value >= 0.0 && r.value <= 1.0)) t.fail("value", "a view factor is between 0 and 1");
+    r.source = t.optString("source").value_or("");
+    r.line = static_cast<int>(references[i]->source().begin.line);
+    c.references.push_back(std::move(r));
+  }
   if (!c.spacecraft && c.surfaces.empty() && c.points.empty())
     throw GeometryFileError(ctx.source() + ":1: nothing to receive radiation: give [spacecraft], [[surfaces]] or [[points]]");
   return c;

@@ -75,6 +75,15 @@ struct PointReceiverSpec {
   Vec3 position{}, normal{0, 0, 1};
 };
 
+// A view factor whose exact value is known ([[references]]): what `ejecta viewfactor
+// --convergence` measures the error of. `to` is a surface patch or an emitter group.
+struct ReferenceFactor {
+  std::string from, to;
+  double value = 0.0;
+  std::string source;               // where the value comes from ("Howell C-41")
+  int line = 0;                     // in the geometry file, for messages
+};
+
 struct GeometryConfig {
   std::string source;               // the file name, for messages and the report
   std::string name, description;
@@ -87,6 +96,7 @@ struct GeometryConfig {
   std::vector<PointReceiverSpec> points;
   BaselineOptions baseline;
   SamplingOptions sampling;
+  std::vector<ReferenceFactor> references;
 };
 
 // Parses TOML text; `baseDirectory` resolves relative mesh paths. Throws GeometryFileError.

@@ -102,7 +102,8 @@ std::string chartSpecJson(const ChartSpec& spec) {
     if (!s.x.empty()) json += ", \"x\": " + quoted(s.x);
     if (!s.csv.empty()) json += ", \"csv\": " + path(s.csv);
     json += std::string(", \"reference\": ") + boolean(s.reference);
-    json += std::string(", \"markers\": ") + boolean(s.markers) + "}";
+    json += std::string(", \"markers\": ") + boolean(s.markers);
+    json += std::string(", \"points\": ") + boolean(s.points) + "}";
   }
   json += "\n  ],\n";
   json += std::string("  \"xlog\": ") + boolean(spec.xlog) + ",\n";

@@ -24,6 +24,7 @@ struct ChartSeries {
   std::filesystem::path csv{};  // this series' file (default: the chart's)
   bool reference = false;       // an exact or reference curve: dashed black
   bool markers = false;         // points joined by lines
+  bool points = false;          // small dots, no line: every particle of a profile
 };
 
 struct ChartSpec {

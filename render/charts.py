@@ -24,7 +24,8 @@ one line per wall_thickness_m (speed in km/s, critical diameter in mm), the regi
 found in the regime column as dotted lines, and the threat, if given, as a marker. The column
 names may be changed with "group", "x", "y" and "regime".
 A series may name its own csv and x column. "reference": a dashed black line (an exact
-solution). "markers": points joined by lines (a convergence study). For "bar" charts the x column
+solution). "markers": points joined by lines (a convergence study). "points": small dots, no
+line (every particle of a profile). For "bar" charts the x column
 holds the category names and each series is one bar per category.
 Relative csv paths are taken from the spec file's directory. The PNG is written to a temporary
 name in the output's directory and renamed, so a reader never sees half a file. Errors (a
@@ -127,6 +128,9 @@ def draw(spec, base):
                 axes.plot(x, y, "k--", linewidth=1.5, label=label, zorder=3)
             elif entry.get("markers"):
                 axes.plot(x, y, "o-", linewidth=1.5, markersize=5, label=label)
+            elif entry.get("points"):
+                # Every particle of a profile: small dots, no line (they scatter about the curve).
+                axes.plot(x, y, ".", markersize=2, alpha=0.6, label=label, rasterized=True)
             else:
                 axes.plot(x, y, "-", linewidth=1.8, label=label)
     else:
@@ -144,6 +148,11 @@ def draw(spec, base):
                 fail("column '%s' has %d values for %d categories" % (entry["y"], len(y), len(categories)))
             positions = [i - 0.4 + bar * (k + 0.5) for i in range(len(categories))]
             axes.bar(positions, y, width=bar, label=entry.get("label") or entry["y"])
+        # Bars stand on zero; all-zero bars still get an axis a reader can read.
+        values = [v for entry in series for v in tables.column(entry.get("csv") or path, entry["y"])
+                  if v == v]
+        if values and min(values) >= 0:
+            axes.set_ylim(bottom=0, top=None if max(values) > 0 else 1)
         axes.set_xticks(range(len(categories)))
         axes.set_xticklabels(categories, rotation=30 if max(map(len, categories), default=0) > 8 else 0,
                              ha="right" if max(map(len, categories), default=0) > 8 else "center")

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "radiation/constants.hpp"
+#include "render/charts.hpp"
 #include "support/command_line.hpp"
 #include "support/tiny_impact.hpp"
 
@@ -131,6 +132,32 @@ TEST(ChainThermal, InSituPassesMatchTheCommandAndThePhysics) {
     ASSERT_TRUE(q) << p["patch"];
     const double inSitu = p["peak_flux_W_m2"], fromSnapshot = (*q)["peak_flux_W_m2"];
     EXPECT_NEAR(inSitu, fromSnapshot, 1e-9 * std::max(1.0, std::abs(inSitu))) << p["patch"];
+  }
+  // The sizing table pivoted for its chart (apps/thermal_charts.hpp): side0's tungsten row in mm,
+  // the same number sizing.csv gives in m ("nan" where the coating cannot protect the face).
+  auto side0Row = [](const std::string& csv) {
+    std::stringstream row(csv.substr(csv.find("\nside0,") + 1));
+    std::string line;
+    std::getline(row, line);
+    std::vector<std::string> cells;
+    std::stringstream split(line);
+    for (std::string c; std::getline(split, c, ',');) cells.push_back(c);
+    return cells;
+  };
+  const std::string pivot = readTextFile(again / "sizing_chart.csv");
+  ASSERT_EQ(pivot.rfind("patch,tungsten_mm,tungsten_kg\n", 0), 0u) << pivot;
+  const std::vector<std::string> sized = side0Row(readTextFile(again / "sizing.csv"));
+  const std::vector<std::string> pivoted = side0Row(pivot);
+  ASSERT_GE(sized.size(), 6u);
+  ASSERT_EQ(pivoted.size(), 3u) << pivot;
+  if (sized[3] == "1") {
+    EXPECT_NEAR(std::stod(pivoted[1]), std::stod(sized[4]) * 1e3, 1e-6) << pivot;
+  } else {
+    EXPECT_EQ(pivoted[1], "nan") << pivot;
+  }
+  if (ejecta::render::ChartRunner().chartsAvailable()) {
+    for (const char* png : {"flux.png", "wall_side0.png", "sizing.png"})
+      EXPECT_TRUE(fs::exists(again / png)) << again / png;
   }
   fs::remove_all(dir);
 }

@@ -45,8 +45,10 @@ std::vector<Problem> strengthProblems();
 std::vector<Problem> sourceProblems();
 
 // Runs `levels` resolutions, coarsest first: spacing x 2^(levels-1), ..., x 1 (the scene's own),
-// calling measure(scene, finished) on each; observed orders for every L1_ metric.
+// calling measure(scene, finished) on each; observed orders for every L1_ metric. `observer`
+// (optional) sees every step of every run, before that run's measure.
 Report convergenceStudy(const std::string& name, const Options& options, int defaultLevels,
-                        const std::function<void(const Scene&, Finished&)>& measure);
+                        const std::function<void(const Scene&, Finished&)>& measure,
+                        const std::function<void(const Simulation&)>& observer = {});
 
 }  // namespace ejecta::verify::detail

@@ -78,14 +78,15 @@ Finished runAt(Scene scene, double coarsen, const Options& options,
 }
 
 Report convergenceStudy(const std::string& name, const Options& options, int defaultLevels,
-                        const std::function<void(const Scene&, Finished&)>& measure) {
+                        const std::function<void(const Scene&, Finished&)>& measure,
+                        const std::function<void(const Simulation&)>& observer) {
   const Scene scene = problemScene(name, options);
   Report report;
   report.problem = name;
   report.description = scene.description;
   const int levels = options.resolutions > 0 ? options.resolutions : defaultLevels;
   for (int k = levels - 1; k >= 0; --k) {
-    Finished f = runAt(scene, std::pow(2.0, k), options);
+    Finished f = runAt(scene, std::pow(2.0, k), options, observer);
     measure(scene, f);
     report.runs.push_back(std::move(f.run));
   }
@@ -281,7 +282,49 @@ double blastDistance(const ParticleSet& p, std::size_t i, const std::array<doubl
   return std::sqrt(r2);
 }
 
+// The shock: the centre of the radial bin (width `binWidth`, out to `rMax`) with the highest
+// mass-weighted mean density, and that density.
+struct BlastShock {
+  double radius = 0.0;
+  double density = 0.0;
+};
+BlastShock blastShock(const ParticleSet& p, const std::array<double, 3>& centre, int dim,
+                      double binWidth, double rMax) {
+  const int bins = static_cast<int>(rMax / binWidth) + 1;
+  std::vector<double> binRho(bins, 0.0), binMass(bins, 0.0);
+  for (std::size_t i = 0; i < p.numReal; ++i) {
+    const int b = static_cast<int>(blastDistance(p, i, centre, dim) / binWidth);
+    if (b < bins) { binRho[b] += p.mass[i] * p.rho[i]; binMass[b] += p.mass[i]; }
+  }
+  int peak = 0;
+  for (int b = 0; b < bins; ++b) {
+    if (binMass[b] > 0) binRho[b] /= binMass[b];
+    if (binRho[b] > binRho[peak]) peak = b;
+  }
+  return {(peak + 0.5) * binWidth, binRho[peak]};
+}
+
+// Samples the shock radius of every run at kHistorySamples times spread over the run (the first
+// step at or after each), for the radius-against-time record of `ejecta verify --out`.
+constexpr int kHistorySamples = 24;
+
 Report sedov(const std::string& name, const Options& options, int defaultLevels) {
+  std::vector<std::array<double, 2>> history;  // (t, shock radius) of the run in progress
+  double nextSample = -1.0;  // < 0: the run has not started
+  auto observer = [&](const Simulation& sim) {
+    if (options.outDir.empty()) return;  // only written out, never measured against
+    const Scene& scene = sim.scene();
+    const double interval = scene.time.tEnd / kHistorySamples;
+    if (nextSample < 0.0) nextSample = interval;
+    if (sim.time() < nextSample) return;
+    while (nextSample <= sim.time()) nextSample += interval;
+    const auto& deposit = scene.deposits.at(0);
+    const double spacing = scene.bodies[0].spacing;
+    const double extent = scene.domain[0].max - scene.domain[0].min;
+    history.push_back({sim.time(), blastShock(sim.particles(), deposit.center,
+                                              spatialDimension(scene.geometry), spacing,
+                                              extent).radius});
+  };
   return convergenceStudy(name, options, defaultLevels, [&](const Scene& scene, Finished& f) {
     const ParticleSet& p = f.particles;
     const int dim = spatialDimension(scene.geometry);
@@ -293,36 +336,32 @@ Report sedov(const std::string& name, const Options& options, int defaultLevels)
     const double Rs = sedovExact.shockRadius(f.time);
     // Mean absolute density error over particles (the SPH-EXA benchmark's L1) and a binned
     // radial profile for the shock position and peak.
-    const double binWidth = f.run.spacing;
-    const int bins = static_cast<int>(1.5 * Rs / binWidth) + 1;
-    std::vector<double> binRho(bins, 0.0), binMass(bins, 0.0);
     double l1 = 0.0;
     std::vector<std::vector<double>> rows;
     for (std::size_t i = 0; i < p.numReal; ++i) {
       const double r = blastDistance(p, i, deposit.center, dim);
       const exact::SedovState s = sedovExact.at(r, f.time);
       l1 += std::abs(p.rho[i] - s.rho);
-      const int b = static_cast<int>(r / binWidth);
-      if (b < bins) { binRho[b] += p.mass[i] * p.rho[i]; binMass[b] += p.mass[i]; }
       rows.push_back({r, p.rho[i], p.P[i], s.rho, s.p});
     }
     l1 /= static_cast<double>(p.numReal);
-    int peak = 0;
-    for (int b = 0; b < bins; ++b) {
-      if (binMass[b] > 0) binRho[b] /= binMass[b];
-      if (binRho[b] > binRho[peak]) peak = b;
-    }
-    const double rPeak = (peak + 0.5) * binWidth;
+    const BlastShock shock = blastShock(p, deposit.center, dim, f.run.spacing, 1.5 * Rs);
     std::sort(rows.begin(), rows.end());
     f.run.metrics = {
         {"L1_density", l1, "kg/m^3"},
-        {"shock_radius", rPeak, "m"},
+        {"shock_radius", shock.radius, "m"},
         {"shock_radius_exact", Rs, "m"},
-        {"shock_radius_error", (rPeak - Rs) / Rs, "1"},
-        {"peak_density_ratio", binRho[peak] / sedovExact.postShockDensity(), "1"},
+        {"shock_radius_error", (shock.radius - Rs) / Rs, "1"},
+        {"peak_density_ratio", shock.density / sedovExact.postShockDensity(), "1"},
     };
     writeProfile(options, name, f.run, "r,rho,P,rho_exact,P_exact", rows);
-  });
+    std::vector<std::vector<double>> radii;
+    for (const auto& [t, r] : history) radii.push_back({t, r, sedovExact.shockRadius(t)});
+    writeProfile(options, name + "_shock_radius", f.run, "t_s,shock_radius_m,shock_radius_m_exact",
+                 radii);
+    history.clear();
+    nextSample = -1.0;
+  }, observer);
 }
 
 }  // namespace
@@ -374,6 +413,27 @@ std::string reportJson(const Report& r) {
   for (std::size_t k = 0; k < r.orders.size(); ++k)
     s << (k ? ", " : "") << "\"" << r.orders[k].name << "\": " << r.orders[k].value;
   s << "}\n}\n";
+  return s.str();
+}
+
+std::string convergenceCsv(const Report& r) {
+  std::ostringstream s;
+  s.precision(10);
+  if (r.runs.empty()) return s.str();
+  const ResolutionRun& coarsest = r.runs.front();
+  s << "spacing_m,particles,steps,wall_s,energy_error,momentum_error";
+  for (const Metric& m : coarsest.metrics) s << "," << m.name;
+  for (const Metric& m : coarsest.metrics)
+    if (m.name.rfind("L1_", 0) == 0) s << "," << m.name << "_relative";
+  s << ",first_order\n";
+  for (const ResolutionRun& run : r.runs) {
+    s << run.spacing << "," << run.particles << "," << run.steps << "," << run.wallSeconds << ","
+      << run.energyError << "," << run.momentumError;
+    for (const Metric& m : coarsest.metrics) s << "," << run.metric(m.name);
+    for (const Metric& m : coarsest.metrics)
+      if (m.name.rfind("L1_", 0) == 0) s << "," << run.metric(m.name) / m.value;
+    s << "," << run.spacing / coarsest.spacing << "\n";
+  }
   return s.str();
 }
 

@@ -55,6 +55,12 @@ const std::vector<Problem>& problems();
 Report runProblem(const std::string& name, const Options& options);
 // JSON text of a report.
 std::string reportJson(const Report& report);
+// One row per resolution, coarsest first: spacing_m, particles, steps, wall_s, energy_error,
+// momentum_error, every metric; then, for every L1_ metric, its value over the coarsest run's
+// (NAME_relative), and spacing_m over the coarsest spacing (first_order: where a first-order
+// method's relative error would be). What `ejecta verify --out` charts as error against
+// resolution and against run time.
+std::string convergenceCsv(const Report& report);
 // Human-readable table of a report.
 std::string reportTable(const Report& report);
 // Markdown table header and one row per report (its finest run), for the README.
