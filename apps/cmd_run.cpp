@@ -98,14 +98,29 @@ void printSummary(const RunOutcome& r, const std::string& outDir) {
     std::printf("  shield: %s\n", text("thermal_shield").c_str());
   }
   if (extra("thermal_note")) std::printf("  thermal: %s\n", text("thermal_note").c_str());
+  // One line per gauge: the pulse it recorded (sim/gauge_decay.hpp).
+  for (const auto& [k, v] : s.extras) {
+    const std::string suffix = "_peak_pressure_Pa";
+    if (k.rfind("gauge_", 0) != 0 || k.size() <= suffix.size() + 6 ||
+        k.compare(k.size() - suffix.size(), suffix.size(), suffix) != 0)
+      continue;
+    const std::string g = k.substr(0, k.size() - suffix.size());
+    std::printf("  gauge %s: peak %.4g MPa at %.4g ms", g.substr(6).c_str(), std::get<double>(v) * 1e-6,
+                number((g + "_peak_time_s").c_str()) * 1e3);
+    if (extra((g + "_decay_time_s").c_str()))
+      std::printf(", decay constant %.3g us (1/e; fit %.3g us)", number((g + "_decay_time_s").c_str()) * 1e6,
+                  number((g + "_decay_fit_s").c_str()) * 1e6);
+    std::printf("\n");
+  }
   if (!outDir.empty()) {
     const fs::path dir(outDir);
-    std::printf("  outputs: %s/{summary.json, energy.csv, snapshots.xdmf, snapshots/%s%s%s%s%s}\n",
+    std::printf("  outputs: %s/{summary.json, energy.csv, snapshots.xdmf, snapshots/%s%s%s%s%s%s}\n",
                 outDir.c_str(), fs::is_directory(dir / "fields") ? ", fields/" : "",
                 extra("thermal_time_s") ? ", thermal_*/" : "",
                 fs::is_directory(dir / "images") ? ", images/" : "",
                 fs::exists(dir / "gauges.csv") ? ", gauges.csv" : "",
-                fs::exists(dir / "crater_profile.csv") ? ", crater_profile.csv" : "");
+                fs::exists(dir / "crater_profile.csv") ? ", crater_profile.csv" : "",
+                fs::exists(dir / "crater_history.csv") ? ", crater_history.csv" : "");
     if (const SummaryValue* charts = extra("charts"))
       std::printf("  charts: %s\n", std::get<std::string>(*charts).c_str());
     else if (const SummaryValue* note = extra("charts_note"))

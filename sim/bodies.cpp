@@ -1,6 +1,7 @@
 #include "sim/bodies.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
@@ -206,20 +207,41 @@ double distanceSquared(const Point& a, const Point& b, int dim) {
   return r2;
 }
 
+std::string describeRegion(const EnergyDepositSpec& dep, int dim) {
+  if (!dep.hasCenter) return "its body";
+  std::string centre = "(";
+  for (int d = 0; d < dim; ++d)
+    centre += (d ? ", " : "") + formatQuantity(dep.center[static_cast<std::size_t>(d)], Dimension::Length);
+  centre += ")";
+  return (dep.profile == DepositProfile::TopHat
+              ? "radius " + formatQuantity(dep.radius, Dimension::Length)
+              : "width " + formatQuantity(dep.width, Dimension::Length)) +
+         " around " + centre;
+}
+
+}  // namespace
+
 // Adds the deposit so that sum_i m_i du_i = E exactly: du_i = E w_i / sum_j m_j w_j, with
 // w = 1 inside the top hat (0 outside) or w = exp(-r^2/width^2).
-// A body deposit (dep.body >= 0) weighs only that body's particles, [firstOfBody[b],
-// firstOfBody[b + 1]); without a centre, all of them equally (du = E / M_body, the seed's DED).
-void applyDeposit(const Scene& scene, std::size_t index, const std::vector<std::size_t>& firstOfBody,
-                  ParticleSet& p) {
+// A body deposit (dep.body >= 0) weighs only that body's particles, the ids
+// [firstIdOfBody[b], firstIdOfBody[b + 1]) (ids are assigned in body order at build, and travel
+// with the particles when they are reordered); without a centre, all of them equally
+// (du = E / M_body, the seed's DED).
+Point applyDeposit(const Scene& scene, std::size_t index, const std::vector<std::int64_t>& firstIdOfBody,
+                   ParticleSet& p, double time) {
   const EnergyDepositSpec& dep = scene.deposits[index];
   const int dim = spatialDimension(scene.geometry);
-  const std::size_t n = p.size();
+  const std::size_t n = p.numReal;
+  std::int64_t idBegin = 0, idEnd = std::numeric_limits<std::int64_t>::max();
+  if (dep.body >= 0) {
+    idBegin = firstIdOfBody.at(static_cast<std::size_t>(dep.body));
+    idEnd = firstIdOfBody.at(static_cast<std::size_t>(dep.body) + 1);
+  }
   std::vector<double> w(n, 0.0);
   double weightedMass = 0.0;
-  const std::size_t begin = dep.body >= 0 ? firstOfBody[static_cast<std::size_t>(dep.body)] : 0;
-  const std::size_t end = dep.body >= 0 ? firstOfBody[static_cast<std::size_t>(dep.body) + 1] : n;
-  for (std::size_t i = begin; i < end; ++i) {
+  Point centroid{};
+  for (std::size_t i = 0; i < n; ++i) {
+    if (p.id[i] < idBegin || p.id[i] >= idEnd) continue;
     const double r2 = distanceSquared({p.x[0][i], p.x[1][i], p.x[2][i]}, dep.center, dim);
     if (!dep.hasCenter)
       w[i] = 1.0;
@@ -228,17 +250,34 @@ void applyDeposit(const Scene& scene, std::size_t index, const std::vector<std::
     else
       w[i] = std::exp(-r2 / (dep.width * dep.width));
     weightedMass += p.mass[i] * w[i];
+    for (int d = 0; d < 3; ++d) centroid[d] += p.mass[i] * w[i] * p.x[d][i];
   }
-  if (!(weightedMass > 0.0))
-    throw SceneError(where(scene, dep.line) + ": key 'energy_deposits[" + std::to_string(index) +
-                     "]': deposit '" + dep.name + "' covers no particles (" +
-                     (!dep.hasCenter ? std::string("its body has none)")
-                      : (dep.profile == DepositProfile::TopHat
-                             ? "radius " + formatQuantity(dep.radius, Dimension::Length)
-                             : "width " + formatQuantity(dep.width, Dimension::Length)) +
-                            " around its centre)"));
+  if (!(weightedMass > 0.0)) {
+    std::string message = where(scene, dep.line) + ": key 'energy_deposits[" +
+                          std::to_string(index) + "]': deposit '" + dep.name + "'";
+    if (dep.time > 0.0)
+      message += " of scene '" + scene.name + "' at time " +
+                 formatQuantity(time, Dimension::Time) + " (its 'time' " +
+                 formatQuantity(dep.time, Dimension::Time) + ")";
+    message += " covers no particles (" + describeRegion(dep, dim) +
+               (dep.body >= 0 ? " in body '" + scene.bodies[static_cast<std::size_t>(dep.body)].name + "'"
+                              : std::string()) +
+               (dep.time > 0.0 ? ": the region is empty at that moment)" : ")");
+    throw SceneError(message);
+  }
   const double scale = dep.energy / weightedMass;
   for (std::size_t i = 0; i < n; ++i) p.u[i] += scale * w[i];
+  for (double& c : centroid) c /= weightedMass;
+  // In RZ each particle is a ring about the axis: the centroid of the energy is on the axis.
+  if (scene.geometry == Geometry::Axisymmetric) centroid[0] = 0.0;
+  return centroid;
+}
+
+namespace {
+
+// The ids each body's particles get at build: body b holds [first[b], first[b + 1]).
+std::vector<std::int64_t> firstIds(const std::vector<std::size_t>& firstOfBody) {
+  return {firstOfBody.begin(), firstOfBody.end()};
 }
 
 }  // namespace
@@ -295,9 +334,11 @@ ParticleSet buildParticles(const Scene& scene, const MaterialTable& materials) {
     fillBody(scene, materials, b, p);
   }
   firstOfBody.push_back(p.size());
-  for (std::size_t k = 0; k < scene.deposits.size(); ++k) applyDeposit(scene, k, firstOfBody, p);
   for (std::size_t i = 0; i < p.size(); ++i) p.id[i] = static_cast<std::int64_t>(i);
   p.numReal = p.size();
+  // Delayed deposits (time > 0) are the simulation's to fire (Simulation::step).
+  for (std::size_t k = 0; k < scene.deposits.size(); ++k)
+    if (!(scene.deposits[k].time > 0.0)) applyDeposit(scene, k, firstIds(firstOfBody), p, 0.0);
   assignLightingTimes(scene, materials, p);
   // Solid state exists only when a material needs it ("model no more than the scene asks").
   if (materials.anyStrength())
@@ -311,6 +352,21 @@ ParticleSet buildParticles(const Scene& scene, const MaterialTable& materials) {
         p.crack[i] = std::cbrt(scene.bodies[b].damage);
   }
   return p;
+}
+
+}  // namespace ejecta
+
+namespace ejecta {
+
+std::vector<std::int64_t> bodyFirstIds(const Scene& scene, const MaterialTable& materials) {
+  ParticleSet p;
+  std::vector<std::int64_t> first;
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    first.push_back(static_cast<std::int64_t>(p.size()));
+    fillBody(scene, materials, b, p);
+  }
+  first.push_back(static_cast<std::int64_t>(p.size()));
+  return first;
 }
 
 }  // namespace ejecta

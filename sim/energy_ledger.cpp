@@ -19,8 +19,6 @@ bool contains(const std::vector<int>& v, int x) { return std::find(v.begin(), v.
 
 LedgerGroups ledgerGroups(const Scene& scene) {
   LedgerGroups g;
-  for (const BodySpec& b : scene.bodies)
-    if (moving(b) && !contains(g.impactor, b.material)) g.impactor.push_back(b.material);
   for (const DetonationSpec& d : scene.detonations)
     if (!contains(g.explosive, d.material)) g.explosive.push_back(d.material);
   for (const EnergyDepositSpec& e : scene.deposits) {
@@ -28,6 +26,11 @@ LedgerGroups ledgerGroups(const Scene& scene) {
     const int m = scene.bodies[static_cast<std::size_t>(e.body)].material;
     if (!contains(g.explosive, m)) g.explosive.push_back(m);
   }
+  // A device flying in behind the impactor (a delayed body deposit) is the explosive, not an
+  // impactor: its kinetic energy is not what the impact's share is measured against.
+  for (const BodySpec& b : scene.bodies)
+    if (moving(b) && !contains(g.impactor, b.material) && !contains(g.explosive, b.material))
+      g.impactor.push_back(b.material);
   for (const BodySpec& b : scene.bodies)
     if (!moving(b) && !contains(g.impactor, b.material) && !contains(g.explosive, b.material) &&
         !contains(g.target, b.material))
@@ -47,17 +50,37 @@ double sourceYield(const Scene& scene, const std::vector<double>& initialInterna
   return yield;
 }
 
+bool onlyDelayedSources(const Scene& scene) {
+  if (!scene.detonations.empty() || scene.deposits.empty()) return false;
+  for (const EnergyDepositSpec& e : scene.deposits)
+    if (!(e.time > 0.0)) return false;
+  return true;
+}
+
+const DepositFiring* sourceFiring(const Scene& scene, const std::vector<DepositFiring>& firings) {
+  if (!onlyDelayedSources(scene) || firings.empty()) return nullptr;
+  return &firings.front();
+}
+
 CouplingReference couplingReference(const Scene& scene, const std::vector<double>& initialKinetic,
-                                    const std::vector<double>& initialInternal) {
+                                    const std::vector<double>& initialInternal,
+                                    const std::vector<DepositFiring>& firings) {
   CouplingReference ref;
   const std::size_t n = scene.materials.size();
   if (initialKinetic.size() != n || initialInternal.size() != n) return ref;
   const LedgerGroups g = ledgerGroups(scene);
   ref.target = g.target;
+  // The source's gain is measured from the moment it fired: for a delayed deposit, the target's
+  // energy just before it (which holds what an impactor already gave it), not at t = 0.
+  const DepositFiring* first = sourceFiring(scene, firings);
+  const std::vector<double>& kinetic = first ? first->kineticBefore : initialKinetic;
+  const std::vector<double>& internal = first ? first->internalBefore : initialInternal;
+  if (kinetic.size() != n || internal.size() != n) return ref;
   for (int m : g.target)
-    ref.targetInitial += initialKinetic[static_cast<std::size_t>(m)] +
-                         initialInternal[static_cast<std::size_t>(m)];
+    ref.targetInitial += kinetic[static_cast<std::size_t>(m)] + internal[static_cast<std::size_t>(m)];
   if (g.target.empty()) return ref;
+  // Before a delayed source fires there is nothing to share yet.
+  if (onlyDelayedSources(scene) && !first) return ref;
   // A deposit straight into target particles has no separate device to measure against.
   bool depositInTarget = false;
   for (const EnergyDepositSpec& e : scene.deposits) depositInTarget = depositInTarget || e.body < 0;
@@ -114,9 +137,13 @@ double depthInside(const ShapeSpec& shape, const std::array<double, 3>& x, int d
   return 0.0;
 }
 
-std::optional<std::array<double, 3>> sourcePoint(const Scene& scene) {
+std::optional<std::array<double, 3>> sourcePoint(const Scene& scene,
+                                                 const std::vector<DepositFiring>& firings) {
   if (!scene.detonations.empty()) return scene.detonations.front().point;
   if (scene.deposits.empty()) return std::nullopt;
+  // A delayed deposit went off where its energy landed (a device that flew in, say).
+  for (const DepositFiring& f : firings)
+    if (f.deposit == 0) return f.point;
   const EnergyDepositSpec& e = scene.deposits.front();
   if (e.hasCenter) return e.center;
   const ShapeSpec& s = scene.bodies[static_cast<std::size_t>(e.body)].shape;
@@ -131,8 +158,8 @@ std::optional<std::array<double, 3>> sourcePoint(const Scene& scene) {
 
 }  // namespace
 
-std::optional<double> depthOfBurst(const Scene& scene) {
-  const std::optional<std::array<double, 3>> x = sourcePoint(scene);
+std::optional<double> depthOfBurst(const Scene& scene, const std::vector<DepositFiring>& firings) {
+  const std::optional<std::array<double, 3>> x = sourcePoint(scene, firings);
   if (!x) return std::nullopt;
   const LedgerGroups g = ledgerGroups(scene);
   const int dim = spatialDimension(scene.geometry);
@@ -158,18 +185,39 @@ namespace {
 // keeps, and where the device sat (the seed's Tables 3.4-3.6 and eq. 3.1).
 void addSourceCoupling(const Scene& scene, const std::vector<double>& initialKinetic,
                        const std::vector<double>& initialInternal,
-                       const std::vector<ConservedTotals>& now, RunSummary& summary) {
+                       const std::vector<ConservedTotals>& now,
+                       const std::vector<DepositFiring>& firings, RunSummary& summary) {
   const double yield = sourceYield(scene, initialInternal);
   const bool planar = scene.geometry == Geometry::Planar;
   summary.extras.push_back({planar ? "yield_J_per_m" : "yield_J", yield});
   if (!planar) summary.extras.push_back({"yield_kt", yield / kJoulesPerKilotonTnt});
-  const CouplingReference ref = couplingReference(scene, initialKinetic, initialInternal);
+  // When each deposit fired: t = 0 with the particles, a delayed one at its step (or never).
+  for (std::size_t k = 0; k < scene.deposits.size(); ++k) {
+    const std::string key = "deposit_" + ledgerKey(scene.deposits[k].name);
+    const auto f = std::find_if(firings.begin(), firings.end(),
+                                [&](const DepositFiring& x) { return x.deposit == k; });
+    const bool delayed = scene.deposits[k].time > 0.0;
+    summary.extras.push_back({key + "_fired", !delayed || f != firings.end()});
+    if (!delayed) summary.extras.push_back({key + "_fired_time_s", 0.0});
+    if (f == firings.end()) continue;
+    summary.extras.push_back({key + "_fired_time_s", f->time});
+    summary.extras.push_back({key + "_fired_step", static_cast<std::int64_t>(f->step)});
+    const int dim = spatialDimension(scene.geometry);
+    const char* axis[] = {"x", "y", "z"};
+    for (int d = 0; d < dim; ++d)
+      summary.extras.push_back({key + "_point_" + axis[d] + "_m", f->point[static_cast<std::size_t>(d)]});
+  }
+  const CouplingReference ref = couplingReference(scene, initialKinetic, initialInternal, firings);
+  const DepositFiring* first = sourceFiring(scene, firings);
+  const std::vector<double>& kinetic0 = first ? first->kineticBefore : initialKinetic;
+  const std::vector<double>& internal0 = first ? first->internalBefore : initialInternal;
+  if (first) summary.extras.push_back({"target_energy_before_source_J", ref.targetInitial});
   if (ref.isYield && ref.reference > 0.0) {
     double kinetic = 0.0, internal = 0.0;
     for (int m : ref.target) {
       const std::size_t k = static_cast<std::size_t>(m);
-      kinetic += now[k].kinetic - initialKinetic[k];
-      internal += now[k].internal - initialInternal[k];
+      kinetic += now[k].kinetic - kinetic0[k];
+      internal += now[k].internal - internal0[k];
     }
     const double gain = kinetic + internal;
     summary.extras.push_back({"target_share_of_yield", gain / yield});
@@ -181,7 +229,7 @@ void addSourceCoupling(const Scene& scene, const std::vector<double>& initialKin
     for (int m : ledgerGroups(scene).explosive) explosive += now[static_cast<std::size_t>(m)].total();
     summary.extras.push_back({"explosive_share_of_yield", explosive / yield});
   }
-  if (const std::optional<double> depth = depthOfBurst(scene)) {
+  if (const std::optional<double> depth = depthOfBurst(scene, firings)) {
     summary.extras.push_back({"depth_of_burst_m", *depth});
     if (!planar && yield > 0.0)
       summary.extras.push_back(
@@ -193,7 +241,8 @@ void addSourceCoupling(const Scene& scene, const std::vector<double>& initialKin
 
 void addEnergyPartition(const Scene& scene, const std::vector<double>& initialKinetic,
                         const std::vector<double>& initialInternal,
-                        const std::vector<ConservedTotals>& now, RunSummary& summary) {
+                        const std::vector<ConservedTotals>& now, RunSummary& summary,
+                        const std::vector<DepositFiring>& firings) {
   const std::size_t n = std::min(scene.materials.size(), now.size());
   const bool haveInitial = initialKinetic.size() == n && initialInternal.size() == n;
   for (std::size_t m = 0; m < n; ++m) {
@@ -207,7 +256,7 @@ void addEnergyPartition(const Scene& scene, const std::vector<double>& initialKi
   }
   const LedgerGroups g = ledgerGroups(scene);
   if (haveInitial && (!scene.deposits.empty() || !scene.detonations.empty()))
-    addSourceCoupling(scene, initialKinetic, initialInternal, now, summary);
+    addSourceCoupling(scene, initialKinetic, initialInternal, now, firings, summary);
   if (!haveInitial || g.impactor.empty() || g.target.empty()) return;
   double impactorKinetic = 0.0, targetKinetic = 0.0, targetInternalGain = 0.0;
   for (int m : g.impactor) impactorKinetic += initialKinetic[static_cast<std::size_t>(m)];

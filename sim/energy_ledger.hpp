@@ -9,6 +9,7 @@
 
 #include "sim/conservation.hpp"
 #include "sim/scene.hpp"
+#include "sim/simulation.hpp"
 #include "sim/summary.hpp"
 
 namespace ejecta {
@@ -39,15 +40,24 @@ struct CouplingReference {
   double reference = 0.0;      // [J]
   bool isYield = false;
 };
+// When every source is a delayed deposit, the target's reference is its energy just before the
+// first of them fired (`firings`, Simulation::depositFirings), so that an impactor's energy is not
+// counted as the device's; before that, reference = 0.
 CouplingReference couplingReference(const Scene& scene, const std::vector<double>& initialKinetic,
-                                    const std::vector<double>& initialInternal);
+                                    const std::vector<double>& initialInternal,
+                                    const std::vector<DepositFiring>& firings = {});
+// Whether the scene's only sources are delayed deposits (time > 0), and then the first firing
+// (nullptr before it, or when some source acts at t = 0).
+bool onlyDelayedSources(const Scene& scene);
+const DepositFiring* sourceFiring(const Scene& scene, const std::vector<DepositFiring>& firings);
 // The target's energy gain over the reference, from per-material totals now.
 double couplingShare(const CouplingReference& ref, const std::vector<ConservedTotals>& now);
 
 // Depth of the source below the target's surface [m] (negative: a height above it), from the
-// first detonation's point or the first deposit's centre (or its body's centre of mass), and the
-// target bodies' shapes (sphere, shell, box, half-space). Empty without a source or target.
-std::optional<double> depthOfBurst(const Scene& scene);
+// first detonation's point or the first deposit's centre (or its body's centre of mass; for a
+// delayed deposit that has fired, the centroid of its energy then), and the target bodies'
+// shapes (sphere, shell, box, half-space). Empty without a source or target.
+std::optional<double> depthOfBurst(const Scene& scene, const std::vector<DepositFiring>& firings = {});
 
 // The material's name as a CSV/JSON key part: letters, digits, '-' and '_' kept, others '_'.
 std::string ledgerKey(const std::string& materialName);
@@ -55,11 +65,13 @@ std::string ledgerKey(const std::string& materialName);
 // Adds the partition to the summary's extras: per material the initial and final kinetic and
 // internal energy; for an impact the impactor's initial kinetic energy, the target's gain, its
 // kinetic/internal split and the share of the impactor's kinetic energy it represents; for a
-// source the yield (J and kt), the share of it in the target and its split, the share still in
-// the explosive, and the depth of burst, scaled by the cube root of the yield (the seed's eq. 3.1;
+// source the yield (J and kt), when each deposit fired, the share of it in the target and its
+// split (from the target's energy just before a delayed source), the share still in the
+// explosive, and the depth of burst, scaled by the cube root of the yield (the seed's eq. 3.1;
 // not for 2D planar runs, whose yield is per metre).
 void addEnergyPartition(const Scene& scene, const std::vector<double>& initialKinetic,
                         const std::vector<double>& initialInternal,
-                        const std::vector<ConservedTotals>& now, RunSummary& summary);
+                        const std::vector<ConservedTotals>& now, RunSummary& summary,
+                        const std::vector<DepositFiring>& firings = {});
 
 }  // namespace ejecta

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "sim/strength.hpp"
 #include "sim/tensor.hpp"
@@ -97,6 +98,8 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws) {
   const double alpha = sph.alpha, beta = sph.beta, eps = sph.epsilon;
   const double alphaU = sph.conductivity;
   const bool balsara = sph.balsara;
+  const bool evolveAlpha = sph.viscositySwitch != ViscositySwitch::None;
+  const double betaPerAlpha = alpha > 0.0 ? beta / alpha : 0.0;  // keeps the scene's ratio
   constexpr bool kInterface = Form == MomentumForm::Interface;
   const bool continuityHere = kInterface && sph.density == DensityMethod::Continuity;
 
@@ -109,6 +112,15 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws) {
       const double div = std::abs(p.divv[i]);
       shearFactor[i] = div / (div + p.curlv[i] + 1e-4 * p.cs[i] / p.h[i] + 1e-300);
     }
+  }
+  // Switch: alpha of every particle, a ghost taking its source's (the ghost build leaves it 0).
+  std::vector<double> alphaOf;
+  if (evolveAlpha) {
+    if (!p.hasViscositySwitch())
+      throw std::logic_error("viscosity switch on but the particles carry no alpha");
+    alphaOf.resize(p.size());
+    for (std::size_t i = 0; i < nReal; ++i) alphaOf[i] = p.alpha[i];
+    for (std::size_t g = nReal; g < p.size(); ++g) alphaOf[g] = p.alpha[p.ghostSource[g - nReal]];
   }
   // Fluids: P/(Omega rho s) (Lagrangian) or P/rho (Interface). Solids: the stress terms.
   std::vector<double> pressureTerm;
@@ -178,7 +190,9 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws) {
       if (vdotx < 0.0) {
         const double hij = 0.5 * (hi + hj);
         const double mu = hij * vdotx / (r2 + eps * hij * hij);
-        visc = (-alpha * cij * mu + beta * mu * mu) / sigmaIJ;
+        const double alphaIJ = evolveAlpha ? 0.5 * (alphaOf[i] + alphaOf[j]) : alpha;
+        const double betaIJ = evolveAlpha ? betaPerAlpha * alphaIJ : beta;
+        visc = (-alphaIJ * cij * mu + betaIJ * mu * mu) / sigmaIJ;
         if (balsara) visc *= 0.5 * (shearFactor[i] + shearFactor[j]);
       }
       const double fVisc = mj * visc * dWavg * rInv;
@@ -285,10 +299,38 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws) {
     }
     for (int d = 0; d < 3; ++d) p.a[d][i] = d < D ? acc[d] : 0.0;
     p.du_dt[i] = dudt;
+    if (evolveAlpha) {
+      // Morris & Monaghan (1997) with the (alpha_max - alpha) source of Rosswog et al.
+      // (2000): decay over tau = h/(l c), growth where the flow converges.
+      const double alphaI = p.alpha[i];
+      p.dalpha_dt[i] = -(alphaI - sph.alphaMin) * sph.alphaDecay * ci / hi +
+                       std::max(-p.divv[i], 0.0) * (alpha - alphaI);
+    }
   }
 }
 
 }  // namespace
+
+void initialiseViscosityAlpha(ParticleSet& p, const SphOptions& sph) {
+  if (sph.viscositySwitch == ViscositySwitch::None || p.hasViscositySwitch()) return;
+  p.enableViscositySwitch(sph.alphaMin);
+  if (!p.hasBurn()) return;
+  for (std::size_t i = 0; i < p.numReal; ++i)
+    if (std::isfinite(p.lightingTime[i])) p.alpha[i] = sph.alpha;
+}
+
+void kickViscosityAlpha(ParticleSet& p, std::vector<double>& alphaHalf, const SphOptions& sph,
+                        double half, bool predict) {
+  if (sph.viscositySwitch == ViscositySwitch::None) return;
+  const std::size_t n = p.numReal;
+  const double lo = sph.alphaMin, hi = sph.alpha;
+  if (predict) alphaHalf.resize(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (predict) alphaHalf[i] = std::clamp(p.alpha[i] + half * p.dalpha_dt[i], lo, hi);
+    p.alpha[i] = std::clamp(alphaHalf[i] + half * p.dalpha_dt[i], lo, hi);
+  }
+}
 
 void runForcePass(ParticleSet& p, HydroWorkspace& ws) {
   const bool solid = p.stressComponents() > 0;

@@ -25,6 +25,7 @@ void forEachArray(ParticleSet& p, F&& f) {
   if (p.stressComponents() > 0) { f(p.plasticStrain); f(p.totalStrain); f(p.strainRate); }
   if (p.hasFracture()) { f(p.crack); f(p.dcrack_dt); }
   if (p.hasBurn()) { f(p.lightingTime); f(p.burnFraction); }
+  if (p.hasViscositySwitch()) { f(p.alpha); f(p.dalpha_dt); }
 }
 
 }  // namespace
@@ -57,6 +58,12 @@ void ParticleSet::enableBurn() {
   burn_ = true;
   lightingTime.assign(size(), -std::numeric_limits<double>::infinity());
   burnFraction.assign(size(), 1.0);
+}
+
+void ParticleSet::enableViscositySwitch(double initial) {
+  viscositySwitch_ = true;
+  alpha.assign(size(), initial);
+  dalpha_dt.assign(size(), 0.0);
 }
 
 void ParticleSet::append(const std::array<double, 3>& pos, const std::array<double, 3>& vel,

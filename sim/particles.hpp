@@ -63,6 +63,12 @@ struct ParticleSet {
   std::vector<double> lightingTime;
   std::vector<double> burnFraction;
 
+  // --- Viscosity switch: allocated only when the scene evolves alpha (enableViscositySwitch) ---
+  // Per-particle Monaghan viscosity coefficient alpha_i (Morris & Monaghan 1997), integrated in
+  // time like u, and its rate.
+  std::vector<double> alpha;
+  std::vector<double> dalpha_dt;     // [1/s]
+
   std::size_t numReal = 0;
   // For ghost k (index numReal + k): the real particle it images.
   std::vector<std::size_t> ghostSource;
@@ -71,6 +77,7 @@ struct ParticleSet {
   int stressComponents() const { return stressComponents_; }
   bool hasFracture() const { return fracture_; }
   bool hasBurn() const { return burn_; }
+  bool hasViscositySwitch() const { return viscositySwitch_; }
   double damage(std::size_t i) const { return fracture_ ? crack[i] * crack[i] * crack[i] : 0.0; }
   // Allocate (zeroed) the solid-mechanics arrays for `components` stress components (4 or 6).
   void enableStrength(int components);
@@ -78,6 +85,8 @@ struct ParticleSet {
   void enableFracture();
   // Allocate the burn arrays: every particle burnt (t_L = -infinity, F = 1) until set.
   void enableBurn();
+  // Allocate the viscosity-switch arrays: alpha = `initial` everywhere, rate 0.
+  void enableViscositySwitch(double initial);
   std::size_t numGhosts() const { return size() - numReal; }
 
   // Resize every array to n particles (new entries zeroed; omega set to 1).
@@ -95,6 +104,7 @@ struct ParticleSet {
   int stressComponents_ = 0;
   bool fracture_ = false;
   bool burn_ = false;
+  bool viscositySwitch_ = false;
 };
 
 }  // namespace ejecta

@@ -17,6 +17,7 @@
 #include "sim/atomic_file.hpp"
 #include "sim/bodies.hpp"
 #include "sim/energy_ledger.hpp"
+#include "sim/gauge_decay.hpp"
 #include "sim/gauges.hpp"
 #include "sim/kernel.hpp"
 #include "sim/snapshot.hpp"
@@ -29,6 +30,34 @@ namespace ejecta {
 namespace {
 
 constexpr const char* kOverridePrefix = "# ejecta-override: ";
+// A delayed deposit the run has fired, with the ledger's state just before it: restart state
+// that travels in the stored scene text as a comment line, so a restart neither fires it again
+// nor loses the reference its share is measured from.
+constexpr const char* kFiringPrefix = "# ejecta-deposit-fired: ";
+
+std::string formatFiring(const DepositFiring& f) {
+  std::ostringstream out;
+  out.precision(17);
+  out << kFiringPrefix << f.deposit << ' ' << f.time << ' ' << f.step;
+  for (double c : f.point) out << ' ' << c;
+  out << ' ' << f.kineticBefore.size();
+  for (double e : f.kineticBefore) out << ' ' << e;
+  for (double e : f.internalBefore) out << ' ' << e;
+  return out.str();
+}
+
+DepositFiring parseFiring(const std::string& text) {
+  std::istringstream in(text);
+  DepositFiring f;
+  std::size_t materials = 0;
+  in >> f.deposit >> f.time >> f.step >> f.point[0] >> f.point[1] >> f.point[2] >> materials;
+  f.kineticBefore.resize(materials);
+  f.internalBefore.resize(materials);
+  for (double& e : f.kineticBefore) in >> e;
+  for (double& e : f.internalBefore) in >> e;
+  if (!in) throw SceneError("stored scene: malformed line '" + std::string(kFiringPrefix) + text + "'");
+  return f;
+}
 
 std::string snapshotName(long index) {
   char buf[32];
@@ -38,23 +67,27 @@ std::string snapshotName(long index) {
 
 // Scene text with the --set overrides recorded as comment lines, so a restart rebuilds the
 // same scene from the snapshot alone.
-std::string sourceWithOverrides(const RunOptions& o) {
+std::string sourceWithOverrides(const RunOptions& o, const std::vector<DepositFiring>& firings = {}) {
   std::string text;
   for (const std::string& s : o.overrides) text += kOverridePrefix + s + "\n";
+  for (const DepositFiring& f : firings) text += formatFiring(f) + "\n";
   return text + o.sceneSource;
 }
 
 // Inverse of sourceWithOverrides: the scene text and the override strings.
 void splitStoredScene(const std::string& stored, std::string& source,
-                      std::vector<std::string>& overrides) {
+                      std::vector<std::string>& overrides,
+                      std::vector<DepositFiring>* firings = nullptr) {
   source.clear();
   overrides.clear();
   std::istringstream in(stored);
   std::string line;
-  const std::string prefix = kOverridePrefix;
+  const std::string prefix = kOverridePrefix, firingPrefix = kFiringPrefix;
   while (std::getline(in, line)) {
     if (line.rfind(prefix, 0) == 0) overrides.push_back(line.substr(prefix.size()));
-    else source += line + "\n";
+    else if (line.rfind(firingPrefix, 0) == 0) {
+      if (firings) firings->push_back(parseFiring(line.substr(firingPrefix.size())));
+    } else source += line + "\n";
   }
 }
 
@@ -129,8 +162,10 @@ class RunOutputs {
   void logEnergy(const Simulation& sim, double e0) {
     if (!energy_.is_open()) return;
     const ConservedTotals t = sim.totals();
+    // A delayed deposit is a source, not an error: the expected total includes what it added.
+    const double expected = e0 + sim.delayedEnergyAdded();
     energy_ << sim.stepCount() << ',' << sim.time() << ',' << sim.lastDt() << ',' << t.kinetic
-            << ',' << t.internal << ',' << t.total() << ',' << (t.total() - e0) / std::abs(e0)
+            << ',' << t.internal << ',' << t.total() << ',' << (t.total() - expected) / std::abs(expected)
             << ',' << t.momentum[0] << ',' << t.momentum[1] << ',' << t.momentum[2];
     if (materials_ > 0) {
       const std::vector<ConservedTotals> byMaterial = conservedTotalsByMaterial(sim.particles(), materials_);
@@ -144,7 +179,7 @@ class RunOutputs {
     energy_.flush();
     gauges_.flush();
     const std::string name = snapshotName(info.snapshotIndex);
-    info.sceneSource = sourceWithOverrides(options_);
+    info.sceneSource = sourceWithOverrides(options_, sim.depositFirings());
     ejecta::writeSnapshot((fs::path(options_.outDir) / "snapshots" / name).string(),
                           sim.particles(), info);
     xdmf_.push_back({"snapshots/" + name, info.time, sim.particles().numReal, info.geometry});
@@ -153,31 +188,38 @@ class RunOutputs {
   void setSeries(std::vector<XdmfEntry> entries) { xdmf_ = std::move(entries); }
   // Each gauge's peak pressure and its time, from the whole of gauges.csv (a restarted run's
   // too), into the summary.
-  void addGaugePeaks(const Scene& scene, RunSummary& summary) {
+  // Each gauge's shock pulse (sim/gauge_decay.hpp): the peak and its time, and, when the
+  // record holds the pulse, its arrival and Cole's decay constant theta (the 1/e time from the
+  // peak, and the log-linear fit over that e-fold). Overpressure is over the gauge's first
+  // reading, the ambient before anything arrives.
+  void addGaugePeaks(RunSummary& summary) {
     if (!gauges_.is_open()) return;
     gauges_.flush();
-    std::ifstream in(fs::path(options_.outDir) / "gauges.csv");
-    std::string line;
-    std::getline(in, line);
-    const std::size_t columnsPerGauge = 2 + static_cast<std::size_t>(spatialDimension(scene.geometry));
-    std::vector<double> peak(scene.gauges.size(), -std::numeric_limits<double>::infinity());
-    std::vector<double> when(scene.gauges.size(), 0.0);
-    while (std::getline(in, line)) {
-      std::stringstream row(line);
-      std::vector<double> cells;
-      for (std::string cell; std::getline(row, cell, ',');) cells.push_back(std::strtod(cell.c_str(), nullptr));
-      for (std::size_t g = 0; g < scene.gauges.size(); ++g) {
-        const std::size_t c = 2 + g * columnsPerGauge;
-        if (c < cells.size() && cells[c] > peak[g]) {
-          peak[g] = cells[c];
-          when[g] = cells[1];
+    const GaugePressures history = readGaugePressures((fs::path(options_.outDir) / "gauges.csv").string());
+    for (std::size_t g = 0; g < history.names.size(); ++g) {
+      const std::vector<double>& p = history.pressure[g];
+      double ambient = std::numeric_limits<double>::quiet_NaN();
+      for (double v : p)
+        if (std::isfinite(v)) {
+          ambient = v;
+          break;
         }
+      if (!std::isfinite(ambient)) continue;  // no particle ever reached the gauge
+      const std::string key = "gauge_" + history.names[g];
+      const auto peak = std::max_element(p.begin(), p.end(), [](double a, double b) {
+        return std::isnan(a) || (!std::isnan(b) && b > a);
+      });
+      summary.extras.push_back({key + "_peak_pressure_Pa", *peak});
+      summary.extras.push_back({key + "_peak_time_s", history.time[static_cast<std::size_t>(peak - p.begin())]});
+      if (history.time.size() < 2 || !(*peak > ambient)) continue;
+      try {
+        const ShockPulse pulse = measureShockPulse(history.time, p, ambient);
+        summary.extras.push_back({key + "_arrival_s", pulse.arrival});
+        if (std::isfinite(pulse.eFoldTime)) summary.extras.push_back({key + "_decay_time_s", pulse.eFoldTime});
+        if (std::isfinite(pulse.fitTime)) summary.extras.push_back({key + "_decay_fit_s", pulse.fitTime});
+      } catch (const std::invalid_argument& e) {  // e.g. a history whose times repeat
+        summary.extras.push_back({key + "_decay_note", std::string(e.what())});
       }
-    }
-    for (std::size_t g = 0; g < scene.gauges.size(); ++g) {
-      if (!std::isfinite(peak[g])) continue;
-      summary.extras.push_back({"gauge_" + scene.gauges[g].name + "_peak_pressure_Pa", peak[g]});
-      summary.extras.push_back({"gauge_" + scene.gauges[g].name + "_peak_time_s", when[g]});
     }
   }
   void setCouplingReference(CouplingReference ref) { reference_ = std::move(ref); }
@@ -254,7 +296,9 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
   };
   if (!fresh)
     outputs.setCouplingReference(couplingReference(scene, info.initialMaterialKinetic,
-                                                   info.initialMaterialInternal));
+                                                   info.initialMaterialInternal,
+                                                   sim.depositFirings()));
+  std::size_t firingsSeen = sim.depositFirings().size();
   try {
     if (fresh) {
       // Derivatives of the initial state; snapshot 0 holds it with them.
@@ -283,6 +327,12 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
       const double limit = std::min(tEnd, info.nextOutputTime);
       sim.step(limit);
       lastWritten = false;
+      if (sim.depositFirings().size() != firingsSeen) {  // a delayed source fired: new reference
+        firingsSeen = sim.depositFirings().size();
+        outputs.setCouplingReference(couplingReference(scene, info.initialMaterialKinetic,
+                                                       info.initialMaterialInternal,
+                                                       sim.depositFirings()));
+      }
       outputs.logEnergy(sim, info.initialEnergy);
       outputs.logGauges(sim);
       if (options.observer) options.observer(sim);
@@ -319,7 +369,8 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
   s.threads = omp_get_max_threads();
   s.energy.initial = info.initialEnergy;
   s.energy.final = t.total();
-  s.energy.relativeError = (t.total() - info.initialEnergy) / std::abs(info.initialEnergy);
+  const double expected = info.initialEnergy + sim.delayedEnergyAdded();
+  s.energy.relativeError = (t.total() - expected) / std::abs(expected);
   s.momentum.initial = info.initialMomentum;
   s.momentum.final = t.momentum;
   s.status = outcome.ok ? RunSummary::Status::Completed : RunSummary::Status::Failed;
@@ -332,8 +383,9 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
                                               static_cast<double>(s.steps) / s.wallSeconds
                                         : 0.0});
   addEnergyPartition(scene, info.initialMaterialKinetic, info.initialMaterialInternal,
-                     conservedTotalsByMaterial(sim.particles(), scene.materials.size()), s);
-  outputs.addGaugePeaks(scene, s);
+                     conservedTotalsByMaterial(sim.particles(), scene.materials.size()), s,
+                     sim.depositFirings());
+  outputs.addGaugePeaks(s);
   if (options.onFinish) options.onFinish(sim, s);
   if (outputs.enabled())
     writeSummaryJson((fs::path(options.outDir) / "summary.json").string(), s);
@@ -391,7 +443,8 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
   RunOptions options = baseOptions;
   options.outDir = runDir;
   // The scene as the run was started: its text and --set overrides travel in the snapshot.
-  splitStoredScene(info.sceneSource, options.sceneSource, options.overrides);
+  std::vector<DepositFiring> firings;
+  splitStoredScene(info.sceneSource, options.sceneSource, options.overrides, &firings);
   const std::vector<std::string>& overrides = options.overrides;
   Scene scene = parseScene(options.sceneSource, files.back().string() + " (stored scene)", overrides);
   if (options.configure) options.configure(scene, options);
@@ -421,6 +474,7 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
   Simulation sim(scene, std::move(particles), std::move(materials), threads);
   if (needsFlaws) sim.distributeFlaws(initial);
   sim.resume(info.time, info.step, info.dtNext);
+  sim.restoreDepositFirings(std::move(firings));
   info.snapshotIndex += 1;
   return drive(sim, options, outputs, info, info.wallSeconds, true, false);
 }

@@ -38,7 +38,7 @@ const std::map<std::string_view, KeyList>& schemaTables() {
         {"sph",
          {"kernel", "density", "smoothing_length", "eta", "relaxation", "courant", "force_factor",
           "h_min_factor", "viscosity", "conductivity", "form", "artificial_stress"}},
-        {"sph.viscosity", {"alpha", "beta", "epsilon", "balsara"}},
+        {"sph.viscosity", {"alpha", "beta", "epsilon", "balsara", "switch", "alpha_min", "decay"}},
         {"sph.conductivity", {"alpha"}},
         {"sph.artificial_stress", {"epsilon", "n"}},
         {"time", {"t_end", "dt_max", "dt_min", "max_steps"}},
@@ -63,10 +63,12 @@ const std::map<std::string_view, KeyList>& schemaTables() {
          {"name", "material", "shape", "min", "max", "center", "radius", "inner_radius",
           "outer_radius", "point", "normal", "lattice", "spacing", "density", "pressure",
           "internal_energy", "velocity", "damage", "void", "depth"}},
-        {"energy_deposits[]", {"name", "energy", "body", "center", "radius", "profile", "width"}},
+        {"energy_deposits[]",
+         {"name", "energy", "body", "center", "radius", "profile", "width", "time"}},
         {"detonations[]", {"name", "material", "point", "line_to", "time", "velocity"}},
         {"gauges[]", {"name", "position"}},
-        {"images", {"fields", "log", "every", "size", "cut", "grids", "surface"}},
+        {"images", {"fields", "log", "every", "size", "cut", "cut_at", "camera", "grids", "surface"}},
+        {"images.camera", {"position", "target", "up", "fov_degrees"}},
         {"thermal", {"study", "times", "hot_material"}},
     };
   }();
@@ -541,6 +543,17 @@ void readSph(const TableReader& root, SphOptions& sph) {
     v.check(sph.epsilon > 0.0, "epsilon",
             positiveMessage(sph.epsilon, one) + "; it keeps the viscosity finite as r -> 0");
     sph.balsara = v.optBool("balsara").value_or(sph.balsara);
+    sph.viscositySwitch = v.optEnum<ViscositySwitch>(
+                               "switch", {{"none", ViscositySwitch::None},
+                                          {"morris_monaghan", ViscositySwitch::MorrisMonaghan}})
+                              .value_or(sph.viscositySwitch);
+    sph.alphaMin = v.optQuantity("alpha_min", one).value_or(sph.alphaMin);
+    v.check(sph.alphaMin >= 0.0, "alpha_min", nonNegativeMessage(sph.alphaMin, one));
+    v.check(sph.viscositySwitch == ViscositySwitch::None || sph.alphaMin <= sph.alpha,
+            "alpha_min", "must not exceed alpha (the switch keeps alpha_i between them)");
+    sph.alphaDecay = v.optQuantity("decay", one).value_or(sph.alphaDecay);
+    v.check(sph.alphaDecay > 0.0, "decay",
+            positiveMessage(sph.alphaDecay, one) + "; alpha decays over h / (decay c)");
   }
   if (const toml::table* ct = r.optTable("conductivity")) {
     const TableReader c(root.context(), *ct, "sph.conductivity", "sph.conductivity");
@@ -697,6 +710,33 @@ void readGridImages(const TableReader& r, Scene& scene) {
   }
 }
 
+// [images.camera]: a camera the renderer can use (render/view_transform.hpp would reject the
+// same, later and without the key's name).
+void readImageCamera(const TableReader& r, ImageOutputOptions& im) {
+  ImageCamera c;
+  const char* layout = "[x, y, z]";
+  auto point = [&](const char* k) {
+    r.require(k);
+    return *r.optVector(k, Dimension::Length, 3, layout);
+  };
+  c.position = point("position");
+  c.target = point("target");
+  c.up = r.optVector("up", Dimension::None, 3, layout).value_or(c.up);
+  c.fovDegrees = r.optQuantity("fov_degrees", Dimension::None).value_or(c.fovDegrees);
+  r.check(c.fovDegrees > 0.0 && c.fovDegrees < 180.0, "fov_degrees", "must be between 0 and 180");
+  const std::array<double, 3> sight{c.target[0] - c.position[0], c.target[1] - c.position[1],
+                                    c.target[2] - c.position[2]};
+  const double distance = std::hypot(sight[0], sight[1], sight[2]);
+  r.check(distance > 0.0, "target", "is the camera's position: the camera must look somewhere");
+  const double upLength = std::hypot(c.up[0], c.up[1], c.up[2]);
+  const std::array<double, 3> side{sight[1] * c.up[2] - sight[2] * c.up[1],
+                                   sight[2] * c.up[0] - sight[0] * c.up[2],
+                                   sight[0] * c.up[1] - sight[1] * c.up[0]};
+  r.check(upLength > 0.0 && std::hypot(side[0], side[1], side[2]) > 1e-6 * distance * upLength,
+          "up", "must not be zero or along the line of sight (position -> target)");
+  im.camera = c;
+}
+
 void readImages(const TableReader& root, Scene& scene) {
   const toml::table* t = root.optTable("images");
   if (!t) return;
@@ -725,6 +765,17 @@ void readImages(const TableReader& root, Scene& scene) {
   im.cut = r.optString("cut").value_or("z");
   r.check(im.cut == "none" || im.cut == "x" || im.cut == "y" || im.cut == "z", "cut",
           "expected \"none\", \"x\", \"y\" or \"z\"");
+  if (auto at = r.optQuantity("cut_at", Dimension::Length)) {
+    r.check(spatialDimension(scene.geometry) == 3 && im.cut != "none", "cut_at",
+            "moves the cut of a 3D picture; this scene has none (cut = \"" + im.cut + "\", " +
+                std::to_string(spatialDimension(scene.geometry)) + "D)");
+    im.cutAt = *at;
+  }
+  if (const toml::table* c = r.optTable("camera")) {
+    r.check(spatialDimension(scene.geometry) == 3, "camera",
+            "only 3D pictures have a camera; 2D and RZ pictures are orthographic sections");
+    readImageCamera(TableReader(root.context(), *c, "images.camera", "images.camera"), im);
+  }
   readGridImages(r, scene);
 }
 
@@ -1126,6 +1177,13 @@ void readDeposits(const TableReader& root, Scene& scene) {
     checkUniqueName(r, names, e.name);
     e.energy = r.requireQuantity("energy", Dimension::Energy);
     r.check(e.energy > 0.0, "energy", positiveMessage(e.energy, Dimension::Energy));
+    // A delayed deposit (the follower's burst after the impact) must fire before the run ends.
+    e.time = r.optQuantity("time", Dimension::Time).value_or(0.0);
+    r.check(e.time >= 0.0, "time", nonNegativeMessage(e.time, Dimension::Time));
+    r.check(e.time < scene.time.tEnd, "time",
+            "the deposit at " + formatQuantity(e.time, Dimension::Time) +
+                " would never fire: the run ends at t_end = " +
+                formatQuantity(scene.time.tEnd, Dimension::Time));
     if (const std::optional<std::string> body = r.optString("body")) {
       for (std::size_t b = 0; b < scene.bodies.size(); ++b)
         if (scene.bodies[b].name == *body) e.body = static_cast<int>(b);

@@ -34,6 +34,10 @@ enum class DepositProfile { TopHat, Gaussian };
 //               continuity density).
 enum class MomentumForm { Lagrangian, Interface };
 
+// Per-particle artificial viscosity (docs/undex.md, "Viscosity switch"): None keeps alpha
+// constant; MorrisMonaghan evolves alpha_i between alpha_min and alpha (Morris & Monaghan 1997).
+enum class ViscositySwitch { None, MorrisMonaghan };
+
 struct AxisBounds {
   double min = 0.0, max = 0.0;
   BoundaryKind lower = BoundaryKind::Open;   // boundary at min
@@ -54,6 +58,11 @@ struct SphOptions {
   double beta = 2.0;
   double epsilon = 0.01;     // phi^2 = epsilon * h_ij^2 regulariser
   bool balsara = false;      // Balsara (1995) shear switch
+  // Morris & Monaghan (1997) switch: alpha is alpha_max, alphaMin the floor it decays to over
+  // tau = h / (alphaDecay c); beta scales as beta/alpha_max times the pair's alpha.
+  ViscositySwitch viscositySwitch = ViscositySwitch::None;
+  double alphaMin = 0.1;
+  double alphaDecay = 0.2;
   double conductivity = 0.0; // Price (2008) artificial conductivity coefficient alpha_u; 0 = off
   double hMinFactor = 1e-3;  // h below hMinFactor * initial h is a collapse (run stops)
   MomentumForm form = MomentumForm::Lagrangian;
@@ -150,11 +159,13 @@ struct VoidSpec {
   int line = 0;
 };
 
-// Direct energy deposition (DED): energy added at t = 0 to the particles of a region, or of one
-// body (the device, as the seed's Sec. 3.1.1 models a yield as high-energy granite particles).
+// Direct energy deposition (DED): energy added at `time` (default 0) to the particles of a region,
+// or of one body (the device, as the seed's Sec. 3.1.1 models a yield as high-energy granite
+// particles). A delayed deposit (time > 0) goes to the particles in its region at that moment.
 struct EnergyDepositSpec {
   std::string name;
   double energy = 0.0;                      // [J]; in 2D planar per metre depth
+  double time = 0.0;                        // [s]; > 0: fired at the first step start >= time
   int body = -1;                            // index into Scene::bodies; -1: every particle
   bool hasCenter = true;                    // false: a body deposit over the whole body
   std::array<double, 3> center{};
@@ -219,6 +230,15 @@ struct CraterAnalysisOptions {
   double resolution = 0.0;              // [m]; 0 = half the median smoothing length
 };
 
+// [images.camera]: where a 3D picture is taken from (a perspective camera). The ejecta 3D scenes
+// have the target's surface normal along +z, so z is up unless the scene says otherwise.
+struct ImageCamera {
+  std::array<double, 3> position{};         // [m]
+  std::array<double, 3> target{};           // [m]
+  std::array<double, 3> up{0.0, 0.0, 1.0};  // any vector not along the line of sight
+  double fovDegrees = 30.0;                 // vertical field of view
+};
+
 // [images]: pictures of the particles at the snapshot cadence, images/<field>_NNNN.png (apps/
 // particle_images.hpp over render/), and charts of the run's CSVs at the end.
 struct ImageOutputOptions {
@@ -227,7 +247,11 @@ struct ImageOutputOptions {
   std::vector<std::string> log;         // fields drawn on a log scale
   int every = 1;                        // with every Nth snapshot (and the last)
   int size = 1024;                      // pixels (square)
-  std::string cut = "z";                // 3D: keep x, y or z <= 0; "none"
+  std::string cut = "z";                // 3D: keep x, y or z <= cutAt; "none"
+  // Where the cut's plane crosses its axis [m]; none: 0 for particles, and for the surface
+  // picture 0 when the surface spans it, else the surface's middle.
+  std::optional<double> cutAt;
+  std::optional<ImageCamera> camera;    // 3D; none: an automatic camera that frames everything
   // Pictures of the grid files of [fields] (apps/grid_images.hpp), at the outputs both tables'
   // cadences select: slices through the plane z = 0 of these grids, images/grid_<name>_NNNN.png,
   // and the surface level set coloured by temperature, images/surface_NNNN.png.

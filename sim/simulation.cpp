@@ -10,6 +10,7 @@
 #include <numeric>
 #include <sstream>
 
+#include "sim/bodies.hpp"
 #include "sim/density_pass.hpp"
 #include "sim/fracture.hpp"
 #include "sim/hydro_force.hpp"
@@ -84,9 +85,14 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
   }
   if (materials_.anyFracture() && !p_.hasFracture()) p_.enableFracture();
   burn_ = burnTable(scene_, materials_);
+  // A delayed body deposit finds its body's particles by id (they are reordered every few steps).
+  for (const EnergyDepositSpec& dep : scene_.deposits)
+    if (dep.time > 0.0 && dep.body >= 0 && bodyFirstIds_.empty())
+      bodyFirstIds_ = bodyFirstIds(scene_, materials_);
   if (!scene_.detonations.empty() && !p_.hasBurn())
     throw SimulationError("scene '" + scene_.name + "' detonates an explosive but the particles "
                           "carry no lighting times (build them with buildParticles)");
+  initialiseViscosityAlpha(p_, scene_.sph);  // a restart keeps its snapshot's alpha
 }
 
 void Simulation::distributeFlaws(const ParticleSet& initial) {
@@ -287,8 +293,62 @@ void Simulation::kickSolidState(double half, bool predict) {
   }
 }
 
+namespace {
+
+// A deposit is due once the time has reached its own, to rounding (steps are cut to land on it).
+bool depositDue(double time, double depositTime) { return time >= depositTime * (1.0 - 1e-12); }
+
+}  // namespace
+
+bool Simulation::fired(std::size_t deposit) const {
+  return std::any_of(firings_.begin(), firings_.end(),
+                     [&](const DepositFiring& f) { return f.deposit == deposit; });
+}
+
+double Simulation::nextDepositTime() const {
+  double next = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < scene_.deposits.size(); ++k)
+    if (scene_.deposits[k].time > 0.0 && !fired(k)) next = std::min(next, scene_.deposits[k].time);
+  return next;
+}
+
+double Simulation::delayedEnergyAdded() const {
+  double e = 0.0;
+  for (const DepositFiring& f : firings_) e += scene_.deposits[f.deposit].energy;
+  return e;
+}
+
+bool Simulation::fireDueDeposits() {
+  bool any = false;
+  for (std::size_t k = 0; k < scene_.deposits.size(); ++k) {
+    const EnergyDepositSpec& dep = scene_.deposits[k];
+    if (!(dep.time > 0.0) || fired(k) || !depositDue(time_, dep.time)) continue;
+    DepositFiring f;
+    f.deposit = k;
+    f.time = time_;
+    f.step = step_;
+    for (const ConservedTotals& m : conservedTotalsByMaterial(p_, materials_.size())) {
+      f.kineticBefore.push_back(m.kinetic);
+      f.internalBefore.push_back(m.internal);
+    }
+    f.point = applyDeposit(scene_, k, bodyFirstIds_, p_, time_);
+    firings_.push_back(std::move(f));
+    any = true;
+  }
+  return any;
+}
+
 void Simulation::step(double limit) {
   if (step_ % kSortInterval == 0) sortForLocality();
+  // The deposit raises sound speeds by orders of magnitude: pressures, forces and the time step
+  // must come from the state with the energy, not from the step before it.
+  if (fireDueDeposits()) {
+    stateTime_ = time_;
+    evaluateDerivatives();
+    computeNextTimestep();
+    checkHealth(dtNext_);
+  }
+  limit = std::min(limit, nextDepositTime());
   double dt = dtNext_;
   if (time_ + dt > limit) dt = limit - time_;
   const std::size_t n = p_.numReal;
@@ -322,6 +382,7 @@ void Simulation::step(double limit) {
     }
   }
   kickSolidState(half, true);
+  kickViscosityAlpha(p_, alphaHalf_, sph, half, true);
   applyPlasticity(p_, materials_, false);
   boundaries_.confine(p_, &vHalf_);
   if (continuity && sph.smoothingLength == SmoothingLengthMethod::Neighbours)
@@ -339,6 +400,7 @@ void Simulation::step(double limit) {
     if (seedH) p_.h[i] = hHalf_[i] + half * p_.dh_dt[i];
   }
   kickSolidState(half, false);
+  kickViscosityAlpha(p_, alphaHalf_, sph, half, false);
   // Pressure and sound speed of the final state, for the snapshot and the next time step.
   evaluateEquationOfState();
   applyPlasticity(p_, materials_, true);

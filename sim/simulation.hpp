@@ -5,8 +5,11 @@
 // and likewise for u (and rho with continuity density, h with the seed's dh/dt). Derivatives at
 // n+1 use velocities and energies predicted to n+1. Every step: neighbours -> density pass ->
 // equation of state -> force pass; then the time-step criteria and a health check.
+#include <array>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "sim/boundaries.hpp"
 #include "sim/conservation.hpp"
@@ -25,6 +28,17 @@ class SimulationError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A delayed energy deposit (EnergyDepositSpec::time > 0) that has fired: when, where, and the
+// energy ledger's reference just before it (the target's energy "just before the deposit").
+struct DepositFiring {
+  std::size_t deposit = 0;                 // index into Scene::deposits
+  double time = 0.0;                       // the start of the step it fired at [s]
+  long step = 0;                           // steps taken before it fired
+  std::array<double, 3> point{};           // centroid of the deposited energy [m]
+  std::vector<double> kineticBefore;       // per material, just before it [J]
+  std::vector<double> internalBefore;      // per material, just before it [J]
+};
+
 class Simulation {
  public:
   Simulation(Scene scene, ParticleSet particles, MaterialTable materials, int numThreads);
@@ -41,9 +55,18 @@ class Simulation {
   // Particles that failed (principal stress or erosion) in the last step.
   std::size_t lastFailures() const { return lastFailures_; }
 
-  // Advances one step of min(next time step, limit - time). Throws SimulationError on a bad
-  // state (the particles then hold the offending state, for a last snapshot).
+  // Advances one step of min(next time step, limit - time, next delayed deposit - time). A
+  // delayed deposit due at the step's start (time >= its time) fires first: its energy is added,
+  // the derivatives and the time step are recomputed from the new state, and the step takes that
+  // time step. Throws SimulationError on a bad state (the particles then hold the offending
+  // state, for a last snapshot), SceneError for a delayed deposit whose region is empty.
   void step(double limit);
+
+  // The delayed deposits fired so far, in order, and the energy they added [J].
+  const std::vector<DepositFiring>& depositFirings() const { return firings_; }
+  double delayedEnergyAdded() const;
+  // A restarted run: the deposits its snapshot had already fired (they do not fire again).
+  void restoreDepositFirings(std::vector<DepositFiring> firings) { firings_ = std::move(firings); }
 
   double time() const { return time_; }
   long stepCount() const { return step_; }
@@ -66,6 +89,11 @@ class Simulation {
   // Throws SimulationError naming the step, time, `reason` and particle i's state.
   [[noreturn]] void failAt(std::size_t i, const std::string& reason) const;
   void sortForLocality();
+  // Fires the delayed deposits due at the current time; true when one fired.
+  bool fireDueDeposits();
+  // The earliest time of a delayed deposit not yet fired (infinity when none).
+  double nextDepositTime() const;
+  bool fired(std::size_t deposit) const;
 
   Scene scene_;
   ParticleSet p_;
@@ -89,9 +117,12 @@ class Simulation {
   std::vector<double> uHalf_, rhoHalf_, hHalf_;
   std::array<std::vector<double>, 6> stressHalf_;
   std::vector<double> crackHalf_, strainHalf_;
+  std::vector<double> alphaHalf_;  // viscosity switch (sim/hydro_force.hpp)
   FlawSet flaws_;
   bool flawsReady_ = false;
   std::size_t lastFailures_ = 0;
+  std::vector<DepositFiring> firings_;
+  std::vector<std::int64_t> bodyFirstIds_;  // for delayed body deposits (bodyFirstIds)
 };
 
 }  // namespace ejecta

@@ -256,6 +256,10 @@ void writeParticles(hid_t file, const ParticleSet& p, Geometry geometry) {
     writeScalarField(g, {"burn_fraction", "1",
                          "programmed-burn fraction F in [0, 1] (the factor on the JWL pressure)"},
                      p.burnFraction, n);
+  if (p.hasViscositySwitch())
+    writeScalarField(g, {"viscosity_alpha", "1",
+                         "artificial-viscosity coefficient alpha of the Morris-Monaghan switch"},
+                     p.alpha, n);
 }
 
 void writeStringDataset(hid_t group, const char* name, const std::string& text,
@@ -296,6 +300,9 @@ void writeRestart(hid_t file, const ParticleSet& p, const SnapshotInfo& info) {
     writeScalarField(g, {"lighting_time", "s",
                          "programmed-burn lighting time (-inf: not an explosive)"},
                      p.lightingTime, n);
+  if (p.hasViscositySwitch())
+    writeScalarField(g, {"dalpha_dt", "1/s", "rate of the viscosity switch's alpha"},
+                     p.dalpha_dt, n);
   writeStringDataset(g, "scene_source", info.sceneSource, "text of the scene file of the run");
   writeScalarAttribute(g, "dt_next", info.dtNext);
   writeScalarAttribute<std::int64_t>(g, "snapshot_index", info.snapshotIndex);
@@ -583,6 +590,11 @@ ParticleSet readParticles(hid_t file) {
     p.enableBurn();
     p.lightingTime = readDataset<double>(file, "/restart/lighting_time", n, false);
     p.burnFraction = readDataset<double>(file, "/particles/burn_fraction", n, false);
+  }
+  if (linkExists(file, "/particles/viscosity_alpha")) {
+    p.enableViscositySwitch(0.0);
+    p.alpha = readDataset<double>(file, "/particles/viscosity_alpha", n, false);
+    p.dalpha_dt = readDataset<double>(file, "/restart/dalpha_dt", n, false);
   }
   return p;
 }

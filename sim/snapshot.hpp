@@ -45,7 +45,8 @@ void writeSnapshot(const std::string& path, const ParticleSet& p, const Snapshot
 
 // Reads a snapshot written by writeSnapshot. Every stored array is restored bit for bit;
 // numReal = N and there are no ghosts; omega is 1 and divv, curlv, areaDensity are 0 (they are
-// recomputed by the density pass). Throws std::runtime_error naming the file and the missing
+// recomputed by the density pass). Optional arrays (stress, crack, burn, viscosity alpha) are
+// restored when the file has them. Throws std::runtime_error naming the file and the missing
 // or malformed dataset/attribute.
 ParticleSet readSnapshot(const std::string& path, SnapshotInfo& info);
 

@@ -124,14 +124,22 @@ position = [0.25, 0.0]
     peak = std::max(peak, std::stod(line.substr(a + 1)));
   }
   EXPECT_EQ(rows, out.summary.steps + 1);  // t = 0 and every step
-  double summaryPeak = 0.0, when = 0.0;
+  double summaryPeak = 0.0, when = 0.0, arrival = -1.0, decay = -1.0;
   for (const auto& [k, v] : out.summary.extras) {
     if (k == "gauge_g1_peak_pressure_Pa") summaryPeak = std::get<double>(v);
     if (k == "gauge_g1_peak_time_s") when = std::get<double>(v);
+    if (k == "gauge_g1_arrival_s") arrival = std::get<double>(v);
+    if (k == "gauge_g1_decay_time_s") decay = std::get<double>(v);
   }
   EXPECT_NEAR(summaryPeak, peak, 1e-9 * peak);
   EXPECT_GT(peak, 1.2e5) << "the blast should have passed the gauge";
   EXPECT_GT(when, 0.0);
+  // The pulse (sim/gauge_decay.hpp, tested on exact pulses in test_gauge_decay): it arrives
+  // (half its overpressure) before its peak, and falls to 1/e of it within the run.
+  EXPECT_GT(arrival, 0.0);
+  EXPECT_LE(arrival, when);
+  EXPECT_GT(decay, 0.0) << "no decay constant in the summary";
+  EXPECT_LT(when + decay, out.summary.tEnd);
   fs::remove_all(dir);
   EXPECT_THROW(parseScene(gasScene("2d", "[[gauges]]\nname = \"a,b\"\nposition = [0.0, 0.0]\n"), "g.toml"),
                SceneError);
