@@ -7,6 +7,8 @@
 #include <memory>
 #include <sstream>
 
+#include "apps/crater_charts.hpp"
+#include "apps/csv_header.hpp"
 #include "apps/grid_images.hpp"
 #include "apps/particle_images.hpp"
 #include "fields/grid_slice.hpp"
@@ -21,16 +23,6 @@ namespace fs = std::filesystem;
 namespace ejecta::app {
 
 namespace {
-
-std::vector<std::string> csvHeader(const fs::path& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> columns;
-  std::stringstream s(line);
-  for (std::string c; std::getline(s, c, ',');) columns.push_back(c);
-  return columns;
-}
 
 bool has(const std::vector<std::string>& v, const std::string& x) {
   return std::find(v.begin(), v.end(), x) != v.end();
@@ -88,6 +80,7 @@ std::vector<std::string> writeRunCharts(const fs::path& dir, const Scene& scene)
     charts.writeChart(gauges);
     written.push_back("gauges.png");
   }
+  for (const std::string& c : writeCraterCharts(charts, dir, scene.name, scene.geometry)) written.push_back(c);
   return written;
 }
 
@@ -125,6 +118,8 @@ void writeGridFrames(render::Renderer& renderer, const fs::path& dir, const Imag
       if (listed(names, "temperature")) o.colorBy = "temperature";
       o.log = listed(im.log, "temperature");
       o.cut = im.cut;
+      o.cutAt = im.cutAt;
+      if (im.camera) o.camera = renderCamera(*im.camera);
       writeIsoSurfaceImage(renderer, file, o, out);
     });
 }
@@ -158,6 +153,8 @@ void addImageOutputs(RunOptions& options, const Scene& scene, bool charts) {
         o.field = field;
         o.log = std::find(im.log.begin(), im.log.end(), field) != im.log.end();
         o.cut = im.cut;
+        o.cutAt = im.cutAt.value_or(0.0);
+        if (im.camera) o.camera = renderCamera(*im.camera);
         writeParticleImage(**renderer, sim.particles(), geometry, info.time, name, o,
                            render::framePath(dir, field, static_cast<int>(info.snapshotIndex)));
       }

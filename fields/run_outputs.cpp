@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 
+#include "fields/crater_history.hpp"
 #include "fields/crater_setup.hpp"
 #include "fields/grid_set.hpp"
 #include "fields/measure_crater.hpp"
@@ -73,11 +74,37 @@ void addFieldOutputs(RunOptions& options, const Scene& scene) {
 
   if (crater) {
     const double resolution = scene.crater.resolution;
+    // The crater at every output, into crater_history.csv. The last output's measurement is
+    // kept for the summary, so that the two agree and the end is not measured twice.
+    struct Tracking {
+      CraterHistory history;
+      std::optional<CraterMetrics> last;
+      double lastTime = 0.0;
+    };
+    auto tracking = std::make_shared<Tracking>(
+        Tracking{CraterHistory(fs::path(outDir) / "crater_history.csv", crater->planar), {}, 0.0});
+    auto previousOutput = options.onOutput;
+    options.onOutput = [=](const Simulation& sim, const SnapshotInfo& info, bool final) {
+      if (previousOutput) previousOutput(sim, info, final);
+      CraterMetrics m;
+      try {
+        m = measureCrater(sim.particles(), ctx, *crater, resolution);
+      } catch (const std::exception& e) {
+        // A row that says "not found" (found = 0); the run goes on.
+        m = CraterMetrics{};
+        m.note = std::string("crater measurement failed: ") + e.what();
+      }
+      tracking->history.record(info.time, m);
+      tracking->last = m;
+      tracking->lastTime = info.time;
+    };
     auto previous = options.onFinish;
     options.onFinish = [=](const Simulation& sim, RunSummary& summary) {
       if (previous) previous(sim, summary);
       try {
-        const CraterMetrics m = measureCrater(sim.particles(), ctx, *crater, resolution);
+        const CraterMetrics m = tracking->last && tracking->lastTime == sim.time()
+                                    ? *tracking->last
+                                    : measureCrater(sim.particles(), ctx, *crater, resolution);
         addCraterToSummary(m, crater->planar, summary);
         writeFileAtomically(fs::path(outDir) / "crater_profile.csv", craterProfileCsv(m));
       } catch (const std::exception& e) {

@@ -1,7 +1,8 @@
 #pragma once
 // The fields/ outputs of `ejecta run`: VDB grids written in-situ at the scene's [fields] cadence
 // (RUN_DIR/fields/fields_NNNN.vdb, NNNN the snapshot index), and, for impact scenes, the crater
-// measured at the end (summary.json "crater_*" entries and RUN_DIR/crater_profile.csv).
+// measured at every snapshot output (RUN_DIR/crater_history.csv, fields/crater_history.hpp) and
+// at the end (summary.json "crater_*" entries and RUN_DIR/crater_profile.csv).
 #include "sim/run.hpp"
 #include "sim/scene.hpp"
 
