@@ -53,8 +53,10 @@ void buildStressTerms(const ParticleSet& p, const HydroWorkspace& ws, StressTerm
                              ? 1.0 / (p.omega[i] * p.rho[i] * sigmaI)
                              : 1.0 / p.rho[i];
     const bool solid = ws.shearModulus[p.material[i]] > 0.0;
-    // Damage (Grady-Kipp, principal-stress failure) removes the deviatoric stress it cracks.
-    const double intact = solid ? 1.0 - p.damage(i) : 0.0;
+    // Damage (Grady-Kipp, principal-stress failure) removes the deviatoric stress it cracks,
+    // unless the yield surface already holds it (Collins: S sits on (1 - D) Y_i + D Y_d).
+    const double intact =
+        !solid ? 0.0 : ws.yieldCarriesDamage[p.material[i]] ? 1.0 : 1.0 - p.damage(i);
     SymTensor sigma;
     for (int c = 0; c < nc; ++c) sigma[c] = intact * p.stress[c][i];
     for (int c = 0; c < 3; ++c) sigma[c] -= p.P[i];

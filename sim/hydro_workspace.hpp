@@ -28,6 +28,9 @@ struct HydroWorkspace {
   // Shear modulus of each material [Pa]; 0 for a material without strength. Empty when no
   // material has strength (the hydro-only pair loops).
   std::vector<double> shearModulus;
+  // Per material: 1 when its yield surface carries the damage (Collins), so the force uses the
+  // stored S rather than (1 - D) S. Same length as shearModulus.
+  std::vector<unsigned char> yieldCarriesDamage;
   // Artificial stress epsilon in effect (0 = off).
   double artificialStress = 0.0;
   // Number of neighbours in each real particle's gather list (diagnostics).

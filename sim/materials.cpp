@@ -69,6 +69,7 @@ std::optional<StrengthModel> makeStrength(const MaterialSpec& spec, std::optiona
   }
   model.yield = s.model == "elastic"     ? YieldModel::Elastic
                 : s.model == "von_mises" ? YieldModel::VonMises
+                : s.model == "collins"   ? YieldModel::Collins
                                          : YieldModel::JohnsonCook;
   model.shearModulus = valueOr(s, "shear_modulus", model.shearModulus);
   if (!(model.shearModulus > 0.0)) fail("strength.shear_modulus is required and must be positive");
@@ -93,8 +94,28 @@ std::optional<StrengthModel> makeStrength(const MaterialSpec& spec, std::optiona
     if (!(jc.referenceStrainRate > 0.0)) fail("strength.reference_strain_rate must be positive");
   }
   for (const char* key : {"yield_stress", "A", "B", "n", "C", "m"})
-    if (s.find(key) && model.yield == YieldModel::Elastic)
-      fail(std::string("strength.") + key + " does not apply to model \"elastic\"");
+    if (s.find(key) && (model.yield == YieldModel::Elastic || model.yield == YieldModel::Collins))
+      fail(std::string("strength.") + key + " does not apply to model \"" + s.model + "\"");
+  const char* collinsKeys[] = {"cohesion", "friction_intact", "strength_limit", "friction_damaged",
+                               "cohesion_damaged"};
+  if (model.yield == YieldModel::Collins) {
+    for (const char* key : collinsKeys)
+      if (!s.find(key) && std::string_view(key) != "cohesion_damaged")  // optional, default 0
+        fail(std::string("strength.") + key + " is required for model \"collins\"");
+    CollinsParameters& c = model.collins;
+    c.cohesion = valueOr(s, "cohesion", 0.0);
+    c.frictionIntact = valueOr(s, "friction_intact", 0.0);
+    c.strengthLimit = valueOr(s, "strength_limit", 0.0);
+    c.frictionDamaged = valueOr(s, "friction_damaged", 0.0);
+    c.cohesionDamaged = valueOr(s, "cohesion_damaged", 0.0);  // Collins et al. (2004): none
+    if (!(c.frictionIntact > 0.0)) fail("strength.friction_intact must be positive");
+    if (!(c.strengthLimit > c.cohesion))
+      fail("strength.strength_limit must exceed strength.cohesion (the Lundborg curve rises from "
+           "the cohesion to the limit)");
+  } else {
+    for (const char* key : collinsKeys)
+      if (s.find(key)) fail(std::string("strength.") + key + " applies only to model \"collins\"");
+  }
   return model;
 }
 

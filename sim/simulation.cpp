@@ -78,8 +78,12 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
   if (materials_.anyStrength()) {
     if (p_.stressComponents() == 0) p_.enableStrength(stressComponentCount(ws_.dim));
     ws_.shearModulus.assign(materials_.size(), 0.0);
+    ws_.yieldCarriesDamage.assign(materials_.size(), 0);
     for (std::size_t m = 0; m < materials_.size(); ++m)
-      if (materials_[m].strength) ws_.shearModulus[m] = materials_[m].strength->shearModulus;
+      if (materials_[m].strength) {
+        ws_.shearModulus[m] = materials_[m].strength->shearModulus;
+        ws_.yieldCarriesDamage[m] = materials_[m].strength->yieldCarriesDamage() ? 1 : 0;
+      }
     // Gray et al. (2001) use epsilon = 0.3 for elastic solids in tension.
     ws_.artificialStress = scene_.sph.artificialStress < 0.0 ? 0.3 : scene_.sph.artificialStress;
   }

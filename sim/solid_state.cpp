@@ -39,7 +39,7 @@ FlawActivity flawActivity(const ParticleSet& p, const Material& mat, const FlawS
     return a;
   }
   // Largest principal stress of the damaged stress state, tension positive.
-  const SymTensor sigma = effectiveStress(p, i);
+  const SymTensor sigma = effectiveStress(p, i, mat.strength->yieldCarriesDamage());
   double tension;
   if (dimension == 3) {
     std::array<double, 3> values;
@@ -60,8 +60,12 @@ FlawActivity flawActivity(const ParticleSet& p, const Material& mat, const FlawS
 }  // namespace
 
 SymTensor effectiveStress(const ParticleSet& p, std::size_t i) {
+  return effectiveStress(p, i, false);
+}
+
+SymTensor effectiveStress(const ParticleSet& p, std::size_t i, bool yieldCarriesDamage) {
   SymTensor sigma;
-  const double intact = 1.0 - p.damage(i);
+  const double intact = yieldCarriesDamage ? 1.0 : 1.0 - p.damage(i);
   for (int c = 0; c < p.stressComponents(); ++c) sigma[c] = intact * p.stress[c][i];
   for (int c = 0; c < 3; ++c) sigma[c] -= p.P[i];
   return sigma;
@@ -121,15 +125,17 @@ void applyPlasticity(ParticleSet& p, const MaterialTable& materials, bool accumu
     const Material& mat = materials[static_cast<std::size_t>(p.material[i])];
     if (!mat.strength) continue;
     const StrengthModel& s = *mat.strength;
+    const double D = p.damage(i);
     const double flow = s.flowStress(p.plasticStrain[i], p.strainRate[i], p.temperature[i],
-                                     mat.thermal.meltTemperature);
+                                     mat.thermal.meltTemperature, p.P[i], D);
     SymTensor S;
     for (int c = 0; c < nc; ++c) S[c] = p.stress[c][i];
     const double dEp = radialReturn(S, flow, s.shearModulus);
     if (dEp == 0.0) continue;
     for (int c = 0; c < nc; ++c) p.stress[c][i] = S[c];
-    // Only the intact fraction 1 - D yields (applyPlasticity in solid_state.hpp).
-    if (accumulate) p.plasticStrain[i] += (1.0 - p.damage(i)) * dEp;
+    // Only the intact fraction 1 - D yields (applyPlasticity in solid_state.hpp); with a
+    // damaged yield surface (Collins) the whole particle flows.
+    if (accumulate) p.plasticStrain[i] += (s.yieldCarriesDamage() ? 1.0 : 1.0 - D) * dEp;
   }
 }
 
@@ -188,7 +194,9 @@ std::size_t applyFailure(ParticleSet& p, const MaterialTable& materials) {
     bool fails = p.stressComponents() > 0 && p.totalStrain[i] > f.erosionStrain;
     if (!fails && f.kind == FractureKind::PrincipalStress) {
       std::array<double, 3> values;
-      symmetricEigen(effectiveStress(p, i), values, nullptr);
+      const Material& mat = materials[static_cast<std::size_t>(p.material[i])];
+      const bool carries = mat.strength && mat.strength->yieldCarriesDamage();
+      symmetricEigen(effectiveStress(p, i, carries), values, nullptr);
       fails = values[2] > f.tensileStrength;
     }
     if (!fails) continue;

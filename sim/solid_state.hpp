@@ -30,7 +30,9 @@ FlawSet distributeMaterialFlaws(const ParticleSet& initial, const MaterialTable&
 void applyMaterialState(ParticleSet& p, const MaterialTable& materials);
 
 // Radial return of the stored deviatoric stress S to each material's flow stress Y. The force
-// uses (1 - D) S, so the effective stress then sits on the damaged yield surface (1 - D) Y. With
+// uses (1 - D) S, so the effective stress then sits on the damaged yield surface (1 - D) Y;
+// for the Collins model Y = Y(P, D) already holds the damage and the force uses S itself
+// (StrengthModel::yieldCarriesDamage), and the whole increment counts as plastic strain. With
 // `accumulatePlasticStrain` the equivalent plastic strain grows by (1 - D) times the returned
 // increment: the intact volume fraction yields, the cracked fraction D slides on its cracks and
 // adds none, so fully damaged material (no shear) gains no plastic strain (docs/materials.md).
@@ -56,5 +58,7 @@ std::size_t applyFailure(ParticleSet& p, const MaterialTable& materials);
 
 // The full effective stress tensor of particle i: -P I + (1 - D) S (tension positive).
 SymTensor effectiveStress(const ParticleSet& p, std::size_t i);
+// The same with -P I + S when the material's yield surface carries the damage (Collins).
+SymTensor effectiveStress(const ParticleSet& p, std::size_t i, bool yieldCarriesDamage);
 
 }  // namespace ejecta

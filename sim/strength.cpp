@@ -5,12 +5,29 @@
 
 namespace ejecta {
 
+double intactRockStrength(const CollinsParameters& c, double P) {
+  if (P < 0.0) return std::max(c.cohesion + c.frictionIntact * P, 0.0);
+  const double rise = c.frictionIntact * P;
+  return c.cohesion + rise / (1.0 + rise / (c.strengthLimit - c.cohesion));
+}
+
+double damagedRockStrength(const CollinsParameters& c, double P) {
+  const double friction = std::max(c.cohesionDamaged + c.frictionDamaged * P, 0.0);
+  return std::min(friction, intactRockStrength(c, P));
+}
+
+double rockStrength(const CollinsParameters& c, double P, double D) {
+  const double d = std::clamp(D, 0.0, 1.0);
+  return (1.0 - d) * intactRockStrength(c, P) + d * damagedRockStrength(c, P);
+}
+
 double StrengthModel::flowStress(double epsP, double strainRate, double temperature,
-                                 double meltTemperature) const {
+                                 double meltTemperature, double pressure, double damage) const {
   if (temperature >= meltTemperature) return 0.0;
   switch (yield) {
     case YieldModel::Elastic: return std::numeric_limits<double>::infinity();
     case YieldModel::VonMises: return yieldStress;
+    case YieldModel::Collins: return rockStrength(collins, pressure, damage);
     case YieldModel::JohnsonCook: break;
   }
   const JohnsonCookParameters& jc = johnsonCook;
