@@ -10,43 +10,15 @@
 #include "sim/embedded_scenes.hpp"
 #include "sim/run.hpp"
 #include "sim/snapshot.hpp"
+#include "support/periodic_blast.hpp"
 
 namespace fs = std::filesystem;
 
 namespace ejecta {
 namespace {
 
-// A small periodic 2D blast: strong shock, every particle moving, nothing touching a wall.
-const char* kBlastScene = R"(
-[scene]
-name = "test_blast"
-dimension = "2d"
-[domain]
-x = { min = -0.5, max = 0.5, boundary = "periodic" }
-y = { min = -0.5, max = 0.5, boundary = "periodic" }
-[time]
-t_end = 0.02
-[output]
-snapshot_interval = 0.005
-[[materials]]
-name = "gas"
-eos = "ideal_gas"
-gamma = 1.4
-[[bodies]]
-name = "box"
-material = "gas"
-shape = "box"
-min = [-0.5, -0.5]
-max = [0.5, 0.5]
-spacing = 0.025
-density = 1.0
-pressure = 1e-4
-[[energy_deposits]]
-name = "blast"
-energy = 0.1
-center = [0.0, 0.0]
-radius = 0.06
-)";
+// A small periodic 2D blast (tests/support/periodic_blast.hpp).
+const std::string kBlastScene = test::periodicBlastScene();
 
 Simulation makeSimulation(const std::vector<std::string>& overrides = {}, int threads = 2) {
   Scene scene = parseScene(kBlastScene, "test_blast.toml", overrides);

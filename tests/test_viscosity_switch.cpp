@@ -14,6 +14,7 @@
 #include "sim/run.hpp"
 #include "sim/snapshot.hpp"
 #include "sim/verify/runner.hpp"
+#include "support/periodic_blast.hpp"
 
 namespace fs = std::filesystem;
 
@@ -251,38 +252,8 @@ TEST(ViscositySwitch, AlphaDecaysAsTheExactSolutionInGasAtRest) {
 // --- A strong blast: alpha's growth, conservation, determinism, restart ---------------------
 
 // tests/test_simulation.cpp's periodic 2D blast, with the switch on.
-const char* kBlastScene = R"(
-[scene]
-name = "switch_blast"
-dimension = "2d"
-[domain]
-x = { min = -0.5, max = 0.5, boundary = "periodic" }
-y = { min = -0.5, max = 0.5, boundary = "periodic" }
-[sph.viscosity]
-switch = "morris_monaghan"
-[time]
-t_end = 0.02
-[output]
-snapshot_interval = 0.005
-[[materials]]
-name = "gas"
-eos = "ideal_gas"
-gamma = 1.4
-[[bodies]]
-name = "box"
-material = "gas"
-shape = "box"
-min = [-0.5, -0.5]
-max = [0.5, 0.5]
-spacing = 0.025
-density = 1.0
-pressure = 1e-4
-[[energy_deposits]]
-name = "blast"
-energy = 0.1
-center = [0.0, 0.0]
-radius = 0.06
-)";
+const std::string kBlastScene =
+    test::periodicBlastScene("[sph.viscosity]\nswitch = \"morris_monaghan\"\n");
 
 Simulation makeBlast(const std::vector<std::string>& overrides, int threads) {
   Scene scene = parseScene(kBlastScene, "switch_blast.toml", overrides);
