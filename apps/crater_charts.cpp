@@ -1,34 +1,16 @@
 #include "apps/crater_charts.hpp"
 
-#include <fstream>
+#include "apps/csv_header.hpp"
 
 namespace fs = std::filesystem;
 
 namespace ejecta::app {
 
-namespace {
-
-std::string firstLine(const fs::path& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  return line;
-}
-
-// A header and at least one row: a crater that was not found leaves a profile of a header only.
-bool hasRows(const fs::path& path) {
-  std::ifstream in(path);
-  std::string line;
-  return std::getline(in, line) && std::getline(in, line) && !line.empty();
-}
-
-}  // namespace
-
 std::vector<std::string> writeCraterCharts(render::ChartRunner& charts, const fs::path& dir,
                                            const std::string& sceneName, Geometry geometry) {
   std::vector<std::string> written;
   const fs::path history = dir / "crater_history.csv";
-  if (hasRows(history)) {
+  if (csvRowCount(history) > 0) {
     charts.writeChart({.csv = history, .x = "time_s",
                        .series = {{.y = "depth_m", .label = "depth", .markers = true},
                                   {.y = "apparent_diameter_m", .label = "apparent diameter",
@@ -37,7 +19,7 @@ std::vector<std::string> writeCraterCharts(render::ChartRunner& charts, const fs
                        .title = sceneName + ": crater growth", .out = dir / "crater_growth.png"});
     written.push_back("crater_growth.png");
     // Volume has its own chart: its scale is not a length's. A planar run has an area.
-    const bool planar = firstLine(history).find("area_m2") != std::string::npos;
+    const bool planar = hasColumn(csvHeader(history), "area_m2");
     charts.writeChart({.csv = history, .x = "time_s",
                        .series = {{.y = planar ? "area_m2" : "volume_m3",
                                    .label = planar ? "area (per metre)" : "volume",
@@ -49,7 +31,7 @@ std::vector<std::string> writeCraterCharts(render::ChartRunner& charts, const fs
     written.push_back("crater_volume.png");
   }
   const fs::path profile = dir / "crater_profile.csv";
-  if (hasRows(profile)) {
+  if (csvRowCount(profile) > 0) {
     std::vector<render::ChartSeries> series;
     if (geometry == Geometry::Axisymmetric) {
       series = {{.y = "depth_mean_m", .label = "depth"}};

@@ -1,6 +1,7 @@
 #pragma once
 // The first line of a CSV file as column names (empty when the file is missing or empty), and
 // how many data rows follow it: what a chart needs to know before it asks for columns.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -26,6 +27,10 @@ inline std::size_t csvRowCount(const std::filesystem::path& path) {
   for (std::string line; std::getline(in, line);)
     if (!line.empty()) ++lines;
   return lines > 0 ? lines - 1 : 0;
+}
+
+inline bool hasColumn(const std::vector<std::string>& columns, const std::string& name) {
+  return std::find(columns.begin(), columns.end(), name) != columns.end();
 }
 
 }  // namespace ejecta::app

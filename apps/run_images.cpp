@@ -24,10 +24,6 @@ namespace ejecta::app {
 
 namespace {
 
-bool has(const std::vector<std::string>& v, const std::string& x) {
-  return std::find(v.begin(), v.end(), x) != v.end();
-}
-
 // energy.png (totals), energy_partition.png (per material), coupling.png (target_share) and
 // gauges.png (pressure at each gauge), from the run's CSVs.
 std::vector<std::string> writeRunCharts(const fs::path& dir, const Scene& scene) {
@@ -51,7 +47,7 @@ std::vector<std::string> writeRunCharts(const fs::path& dir, const Scene& scene)
                                 .out = dir / "energy_partition.png"};
     for (const MaterialSpec& m : scene.materials) {
       const std::string key = ledgerKey(m.name);
-      if (!has(columns, key + "_kinetic_J")) continue;
+      if (!hasColumn(columns, key + "_kinetic_J")) continue;
       partition.series.push_back({.y = key + "_kinetic_J", .label = m.name + " kinetic"});
       partition.series.push_back({.y = key + "_internal_J", .label = m.name + " internal"});
     }
@@ -60,7 +56,7 @@ std::vector<std::string> writeRunCharts(const fs::path& dir, const Scene& scene)
       written.push_back("energy_partition.png");
     }
   }
-  if (has(columns, "target_share")) {
+  if (hasColumn(columns, "target_share")) {
     charts.writeChart({.csv = energy, .x = "time_s",
                        .series = {{.y = "target_share", .label = "target's share"}},
                        .xlabel = "t [s]",

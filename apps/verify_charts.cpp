@@ -12,14 +12,10 @@ namespace ejecta::app {
 
 namespace {
 
-bool has(const std::vector<std::string>& columns, const std::string& name) {
-  return std::find(columns.begin(), columns.end(), name) != columns.end();
-}
-
 // The reference column of `column`, or "" when the CSV has none.
 std::string referenceOf(const std::vector<std::string>& columns, const std::string& column) {
   for (const char* suffix : {"_exact", "_ref", "_reference"})
-    if (has(columns, column + suffix)) return column + suffix;
+    if (hasColumn(columns, column + suffix)) return column + suffix;
   return "";
 }
 
