@@ -71,24 +71,9 @@ TEST(Simulation, IsDeterministicAndIndependentOfThreadCount) {
 
 TEST(Simulation, RestartMatchesAnUninterruptedRunBitForBit) {
   const fs::path full = freshDir("restart_full"), cut = freshDir("restart_cut");
-  const std::string source = kBlastScene;
-  auto run = [&](const fs::path& dir) {
-    RunOptions options;
-    options.outDir = dir.string();
-    options.sceneSource = source;
-    options.threads = 2;
-    const RunOutcome r = runScene(parseScene(source, "test_blast.toml"), options);
-    ASSERT_TRUE(r.ok) << r.error;
-  };
-  run(full);
-  run(cut);
   // Interrupt the second run at its snapshot 2 (t = 0.01 of 0.02): remove the later ones, resume.
-  ASSERT_TRUE(fs::remove(cut / "snapshots" / "snap_0003.h5"));
-  ASSERT_TRUE(fs::remove(cut / "snapshots" / "snap_0004.h5"));
-  RunOptions options;
-  options.threads = 2;
-  const RunOutcome resumed = restartRun(cut.string(), options);
-  ASSERT_TRUE(resumed.ok) << resumed.error;
+  test::runAndResumeFromSnapshot2(kBlastScene, full, cut);
+  ASSERT_FALSE(::testing::Test::HasFatalFailure());
 
   SnapshotInfo infoA, infoB;
   const ParticleSet a = readSnapshot((full / "snapshots" / "snap_0004.h5").string(), infoA);

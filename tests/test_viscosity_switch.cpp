@@ -333,28 +333,13 @@ fs::path freshDir(const std::string& name) {
 
 TEST(ViscositySwitch, RestartMatchesAnUninterruptedRunBitForBit) {
   const fs::path full = freshDir("full"), cut = freshDir("cut");
-  const std::string source = kBlastScene;
-  auto run = [&](const fs::path& dir) {
-    RunOptions options;
-    options.outDir = dir.string();
-    options.sceneSource = source;
-    options.threads = 2;
-    const RunOutcome r = runScene(parseScene(source, "switch_blast.toml"), options);
-    ASSERT_TRUE(r.ok) << r.error;
-  };
-  run(full);
-  run(cut);
   // Resume the second run from snapshot 2 (t = 0.01 of 0.02); alpha is mid-decay there.
-  ASSERT_TRUE(fs::remove(cut / "snapshots" / "snap_0003.h5"));
-  ASSERT_TRUE(fs::remove(cut / "snapshots" / "snap_0004.h5"));
+  test::runAndResumeFromSnapshot2(kBlastScene, full, cut);
+  ASSERT_FALSE(::testing::Test::HasFatalFailure());
   SnapshotInfo infoMid;
   const ParticleSet mid = readSnapshot((cut / "snapshots" / "snap_0002.h5").string(), infoMid);
   ASSERT_TRUE(mid.hasViscositySwitch());
   EXPECT_GT(*std::max_element(mid.alpha.begin(), mid.alpha.end()), 0.12);  // measured 0.157
-  RunOptions options;
-  options.threads = 2;
-  const RunOutcome resumed = restartRun(cut.string(), options);
-  ASSERT_TRUE(resumed.ok) << resumed.error;
 
   SnapshotInfo infoA, infoB;
   const ParticleSet a = readSnapshot((full / "snapshots" / "snap_0004.h5").string(), infoA);

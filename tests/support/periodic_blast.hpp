@@ -2,7 +2,13 @@
 // A small periodic 2D blast shared by tests: a strong shock, every particle moving, nothing
 // touching a wall (1,600 particles, 0.02 s). `sphTables` is TOML inserted after [domain], e.g.
 // "[sph.viscosity]\nswitch = \"morris_monaghan\"\n".
+#include <gtest/gtest.h>
+
+#include <filesystem>
 #include <string>
+
+#include "sim/run.hpp"
+#include "sim/scene.hpp"
 
 namespace ejecta::test {
 
@@ -38,6 +44,27 @@ energy = 0.1
 center = [0.0, 0.0]
 radius = 0.06
 )";
+}
+
+// The restart check of a scene with snapshots every quarter of its run: runs it into `full` and
+// into `cut`, removes cut's snapshots 3 and 4 and resumes cut from its snapshot 2 (halfway), so
+// that full/ and cut/ snapshots/snap_0004.h5 can be compared. Fails the calling test on error.
+inline void runAndResumeFromSnapshot2(const std::string& source, const std::filesystem::path& full,
+                                      const std::filesystem::path& cut, int threads = 2) {
+  for (const std::filesystem::path& dir : {full, cut}) {
+    RunOptions options;
+    options.outDir = dir.string();
+    options.sceneSource = source;
+    options.threads = threads;
+    const RunOutcome r = runScene(parseScene(source, "test_blast.toml"), options);
+    ASSERT_TRUE(r.ok) << r.error;
+  }
+  ASSERT_TRUE(std::filesystem::remove(cut / "snapshots" / "snap_0003.h5"));
+  ASSERT_TRUE(std::filesystem::remove(cut / "snapshots" / "snap_0004.h5"));
+  RunOptions options;
+  options.threads = threads;
+  const RunOutcome resumed = restartRun(cut.string(), options);
+  ASSERT_TRUE(resumed.ok) << resumed.error;
 }
 
 }  // namespace ejecta::test
