@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "sim/velocity_reconstruction.hpp"
+
 namespace ejecta {
 
 namespace {
@@ -56,6 +58,7 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
   const bool tiedH = summation && sph.smoothingLength == SmoothingLengthMethod::Neighbours;
   const std::size_t nReal = p.numReal;
   const double etaD = powD<D>(sph.eta);
+  const bool gradient = sph.viscosityReconstruction != ViscosityReconstruction::None;
   std::size_t failedIndex = nReal;  // lowest failing index (a min reduction: schedule-proof)
 
 #pragma omp parallel reduction(min : failedIndex)
@@ -113,6 +116,7 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
       const double hInv = 1.0 / h;
       double S = 0.0, dS = 0.0, vdotgrad = 0.0;
       double curl[3] = {0.0, 0.0, 0.0};
+      double gradSum[3][3] = {}, shapeSum[3][3] = {};  // A and M of correctedGradient
       list.clear();
       for (std::size_t k = 0; k < cand.size(); ++k) {
         if (dist2[k] >= reach2) continue;
@@ -132,6 +136,12 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
           dv[d] = p.v[d][i] - p.v[d][j];
           vdotgrad += dv[d] * dx[d] * f;
         }
+        if (gradient)
+          for (int a = 0; a < D; ++a)
+            for (int b = 0; b < D; ++b) {
+              gradSum[a][b] += dv[a] * dx[b] * f;
+              shapeSum[a][b] += dx[a] * dx[b] * f;
+            }
         if constexpr (D == 2) {
           curl[2] += (dv[0] * dx[1] - dv[1] * dx[0]) * f;
         } else if constexpr (D == 3) {
@@ -148,6 +158,12 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
         dS *= norm * hInv;
         vdotgrad *= norm * hInv;
         for (double& c : curl) c *= norm * hInv;
+      }
+      if (gradient) {
+        double G[3][3];
+        correctedGradient<D>(gradSum, shapeSum, G);  // G = 0 where it cannot be inverted
+        for (int a = 0; a < D; ++a)
+          for (int b = 0; b < D; ++b) ws.velocityGradient[3 * a + b][i] = G[a][b];
       }
       ws.lists.storeGather(t, i, list.data(), list.size());
       ws.neighbourCount[i] = static_cast<std::uint32_t>(list.size());
@@ -199,6 +215,8 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
 
 std::optional<std::size_t> runDensityPass(ParticleSet& p, HydroWorkspace& ws) {
   ws.neighbourCount.resize(p.numReal);
+  if (ws.sph.viscosityReconstruction != ViscosityReconstruction::None)
+    for (std::vector<double>& component : ws.velocityGradient) component.assign(p.size(), 0.0);
   if (ws.geometry == Geometry::Axisymmetric) {
     ws.smoothedR.resize(p.size());
     ws.dSmoothedR.resize(p.size());

@@ -18,6 +18,7 @@
 
 #include "sim/strength.hpp"
 #include "sim/tensor.hpp"
+#include "sim/velocity_reconstruction.hpp"
 
 namespace ejecta {
 
@@ -101,6 +102,7 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws) {
   const double alphaU = sph.conductivity;
   const bool balsara = sph.balsara;
   const bool evolveAlpha = sph.viscositySwitch != ViscositySwitch::None;
+  const bool reconstruct = sph.viscosityReconstruction != ViscosityReconstruction::None;
   const double betaPerAlpha = alpha > 0.0 ? beta / alpha : 0.0;  // keeps the scene's ratio
   constexpr bool kInterface = Form == MomentumForm::Interface;
   const bool continuityHere = kInterface && sph.density == DensityMethod::Continuity;
@@ -189,9 +191,16 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws) {
       double visc = 0.0;
       const double cij = 0.5 * (ci + p.cs[j]);
       const double sigmaIJ = 0.5 * (sigmaI + sigmaJ);
-      if (vdotx < 0.0) {
+      // Reconstructed: the approach of the velocities carried to the midpoint. It may only take
+      // viscosity away: capped at the raw approach, so the viscous heating stays positive and the
+      // force is continuous as a pair turns from approaching to receding.
+      const double approach =
+          reconstruct && vdotx < 0.0
+              ? std::max(reconstructedApproach<D>(dx, dv, ws.velocityGradient, i, j), vdotx)
+              : vdotx;
+      if (approach < 0.0) {
         const double hij = 0.5 * (hi + hj);
-        const double mu = hij * vdotx / (r2 + eps * hij * hij);
+        const double mu = hij * approach / (r2 + eps * hij * hij);
         const double alphaIJ = evolveAlpha ? 0.5 * (alphaOf[i] + alphaOf[j]) : alpha;
         const double betaIJ = evolveAlpha ? betaPerAlpha * alphaIJ : beta;
         visc = (-alphaIJ * cij * mu + betaIJ * mu * mu) / sigmaIJ;

@@ -38,7 +38,8 @@ const std::map<std::string_view, KeyList>& schemaTables() {
         {"sph",
          {"kernel", "density", "smoothing_length", "eta", "relaxation", "courant", "force_factor",
           "h_min_factor", "viscosity", "conductivity", "form", "artificial_stress"}},
-        {"sph.viscosity", {"alpha", "beta", "epsilon", "balsara", "switch", "alpha_min", "decay"}},
+        {"sph.viscosity", {"alpha", "beta", "epsilon", "balsara", "switch", "alpha_min", "decay",
+                            "reconstruction"}},
         {"sph.conductivity", {"alpha"}},
         {"sph.artificial_stress", {"epsilon", "n"}},
         {"time", {"t_end", "dt_max", "dt_min", "max_steps"}},
@@ -555,6 +556,12 @@ void readSph(const TableReader& root, SphOptions& sph) {
     sph.alphaDecay = v.optQuantity("decay", one).value_or(sph.alphaDecay);
     v.check(sph.alphaDecay > 0.0, "decay",
             positiveMessage(sph.alphaDecay, one) + "; alpha decays over h / (decay c)");
+    sph.viscosityReconstruction =
+        v.optEnum<ViscosityReconstruction>(
+             "reconstruction", {{"none", ViscosityReconstruction::None},
+                                {"van_leer", ViscosityReconstruction::VanLeer},
+                                {"monotone", ViscosityReconstruction::Monotone}})
+            .value_or(sph.viscosityReconstruction);
   }
   if (const toml::table* ct = r.optTable("conductivity")) {
     const TableReader c(root.context(), *ct, "sph.conductivity", "sph.conductivity");

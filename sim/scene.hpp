@@ -38,6 +38,15 @@ enum class MomentumForm { Lagrangian, Interface };
 // constant; MorrisMonaghan evolves alpha_i between alpha_min and alpha (Morris & Monaghan 1997).
 enum class ViscositySwitch { None, MorrisMonaghan };
 
+// Velocities the viscosity compares (docs/undex.md, "Reconstructed viscosity"): None takes the
+// particles' own. VanLeer carries each to the pair's midpoint along its velocity gradient, limited
+// by van Leer's limiter of the two slopes, so that smooth flow (where the two reconstructions
+// meet) feels no viscosity and a shock (where the limiter stops the reconstruction) the full one.
+// Monotone first limits each particle's gradient (Barth & Jespersen) so that no reconstructed
+// velocity leaves the range of those the particle sees, which damps the ringing behind a shock
+// that VanLeer leaves.
+enum class ViscosityReconstruction { None, VanLeer, Monotone };
+
 struct AxisBounds {
   double min = 0.0, max = 0.0;
   BoundaryKind lower = BoundaryKind::Open;   // boundary at min
@@ -63,6 +72,7 @@ struct SphOptions {
   ViscositySwitch viscositySwitch = ViscositySwitch::None;
   double alphaMin = 0.1;
   double alphaDecay = 0.2;
+  ViscosityReconstruction viscosityReconstruction = ViscosityReconstruction::None;
   double conductivity = 0.0; // Price (2008) artificial conductivity coefficient alpha_u; 0 = off
   double hMinFactor = 1e-3;  // h below hMinFactor * initial h is a collapse (run stops)
   MomentumForm form = MomentumForm::Lagrangian;
