@@ -111,6 +111,14 @@ struct WhippleArgs {
 };
 int whippleCommand(const WhippleArgs& args);
 
+struct UndexReferenceArgs {
+  std::string scene;                   // SCENE.toml: a centred charge in one inert medium
+  int zones = 10000;                   // zones from the centre to the medium's edge
+  std::string outDir;                  // default runs/<scene name> (beside the SPH gauges.csv)
+  std::vector<std::string> overrides;  // --set key=value
+};
+int undexReferenceCommand(const UndexReferenceArgs& args);
+
 // True when stderr is a terminal and CI is not set: show progress lines.
 bool interactive();
 

@@ -111,6 +111,13 @@ int main(int argc, char** argv) {
   whippleCmd->add_option("--out,-o", whippleArgs.outDir, "Output directory (default runs/<name>)");
   whippleCmd->add_flag("--json", whippleArgs.json, "Print whipple.json");
 
+  ejecta::app::UndexReferenceArgs undexArgs;
+  CLI::App* undexCmd = app.add_subcommand("undex-reference", "Converged 1D Lagrangian reference of a centred charge's gauges (docs/undex.md)");
+  undexCmd->add_option("scene", undexArgs.scene, "Scene file (TOML): one explosive body centred on its detonation, one inert body")->required();
+  undexCmd->add_option("--zones", undexArgs.zones, "Zones from the centre to the medium's edge (default 10000)");
+  undexCmd->add_option("--out,-o", undexArgs.outDir, "Output directory for gauges_reference.csv (default runs/<scene name>)");
+  undexCmd->add_option("--set", undexArgs.overrides, "Override a scene key")->take_all();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -126,6 +133,7 @@ int main(int argc, char** argv) {
     if (*thermalCmd) return ejecta::app::thermalCommand(thermalArgs);
     if (*renderCmd) return ejecta::app::renderCommand(renderArgs);
     if (*whippleCmd) return ejecta::app::whippleCommand(whippleArgs);
+    if (*undexCmd) return ejecta::app::undexReferenceCommand(undexArgs);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ejecta: error: %s\n", e.what());
     return 1;
