@@ -121,14 +121,14 @@ void Boundaries::refreshGhosts(ParticleSet& p) const {
   }
 }
 
-void Boundaries::refreshGhostTensor(std::size_t numReal, std::array<std::vector<double>, 9>& t,
-                                    const std::vector<std::size_t>& ghostSource) const {
-  for (std::size_t g = 0; g < ghostSource.size(); ++g) {
-    const std::size_t i = numReal + g, s = ghostSource[g];
+void Boundaries::refreshGhostTensor(const ParticleSet& p, std::vector<double>& tensor) const {
+  for (std::size_t g = 0; g < p.numGhosts(); ++g) {
+    const double* source = &tensor[9 * p.ghostSource[g]];
+    double* ghost = &tensor[9 * (p.numReal + g)];
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) {
         const bool flip = (((flips_[g] >> a) ^ (flips_[g] >> b)) & 1u) != 0;
-        t[3 * a + b][i] = flip ? -t[3 * a + b][s] : t[3 * a + b][s];
+        ghost[3 * a + b] = flip ? -source[3 * a + b] : source[3 * a + b];
       }
   }
 }

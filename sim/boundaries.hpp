@@ -31,11 +31,11 @@ class Boundaries {
   // Recopies per-particle fields from sources to ghosts (after the density pass changed them).
   void refreshGhosts(ParticleSet& p) const;
 
-  // Copies a full (not symmetric) tensor per particle, component 3 a + b, from sources to ghosts:
-  // a mirror reverses the components that pair a reflected axis with one that is not (a velocity
-  // gradient dv_a/dx_b changes sign with v_a and with x_b).
-  void refreshGhostTensor(std::size_t numReal, std::array<std::vector<double>, 9>& t,
-                          const std::vector<std::size_t>& ghostSource) const;
+  // Copies a full (not symmetric) 3 x 3 tensor per particle, stored row-major at 9 i, from
+  // sources to the ghosts of the last makeGhosts: a mirror reverses the components that pair a
+  // reflected axis with one that is not (a velocity gradient dv_a/dx_b changes sign with v_a and
+  // with x_b).
+  void refreshGhostTensor(const ParticleSet& p, std::vector<double>& tensor) const;
 
   // True if every real particle's kernel support (supportFactor * h) near a face lies inside the
   // ghost layer built by the last makeGhosts; false means makeGhosts must run again.

@@ -59,12 +59,14 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
   const std::size_t nReal = p.numReal;
   const double etaD = powD<D>(sph.eta);
   const bool gradient = sph.viscosityReconstruction != ViscosityReconstruction::None;
+  const bool monotone = sph.viscosityReconstruction == ViscosityReconstruction::Monotone;
   std::size_t failedIndex = nReal;  // lowest failing index (a min reduction: schedule-proof)
 
 #pragma omp parallel reduction(min : failedIndex)
   {
     const int t = omp_get_thread_num();
     std::vector<std::uint32_t> cand, list;
+    std::vector<double> offsets;
     std::vector<double> dist2;  // squared distances: membership tests use r^2 < (2h)^2, as
                                 // the neighbour lists do, so both agree at the support edge
     // Dynamic chunks balance the uneven cost (large-h particles, Newton iterations); each
@@ -117,6 +119,9 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
       double S = 0.0, dS = 0.0, vdotgrad = 0.0;
       double curl[3] = {0.0, 0.0, 0.0};
       double gradSum[3][3] = {}, shapeSum[3][3] = {};  // A and M of correctedGradient
+      double vLow[3], vHigh[3];  // range of each velocity component over the gather list
+      offsets.clear();           // x_i - x_j of the gather list, for the range limiter
+      for (int a = 0; a < D; ++a) vLow[a] = vHigh[a] = p.v[a][i];
       list.clear();
       for (std::size_t k = 0; k < cand.size(); ++k) {
         if (dist2[k] >= reach2) continue;
@@ -137,11 +142,15 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
           vdotgrad += dv[d] * dx[d] * f;
         }
         if (gradient)
-          for (int a = 0; a < D; ++a)
-            for (int b = 0; b < D; ++b) {
-              gradSum[a][b] += dv[a] * dx[b] * f;
-              shapeSum[a][b] += dx[a] * dx[b] * f;
+          for (int a = 0; a < D; ++a) {
+            for (int b = 0; b < D; ++b) gradSum[a][b] += dv[a] * dx[b] * f;
+            for (int b = a; b < D; ++b) shapeSum[a][b] += dx[a] * dx[b] * f;  // symmetric
+            if (monotone) {
+              vLow[a] = std::min(vLow[a], p.v[a][j]);
+              vHigh[a] = std::max(vHigh[a], p.v[a][j]);
+              offsets.push_back(dx[a]);
             }
+          }
         if constexpr (D == 2) {
           curl[2] += (dv[0] * dx[1] - dv[1] * dx[0]) * f;
         } else if constexpr (D == 3) {
@@ -160,10 +169,17 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
         for (double& c : curl) c *= norm * hInv;
       }
       if (gradient) {
+        for (int a = 0; a < D; ++a)
+          for (int b = 0; b < a; ++b) shapeSum[a][b] = shapeSum[b][a];
         double G[3][3];
         correctedGradient<D>(gradSum, shapeSum, G);  // G = 0 where it cannot be inverted
+        if (monotone) {
+          const double vi[3] = {p.v[0][i], p.v[1][i], p.v[2][i]};
+          limitToNeighbourRange<D>(G, vi, vLow, vHigh, offsets.data(), offsets.size() / D);
+        }
+        double* out = &ws.velocityGradient[9 * i];
         for (int a = 0; a < D; ++a)
-          for (int b = 0; b < D; ++b) ws.velocityGradient[3 * a + b][i] = G[a][b];
+          for (int b = 0; b < D; ++b) out[3 * a + b] = G[a][b];
       }
       ws.lists.storeGather(t, i, list.data(), list.size());
       ws.neighbourCount[i] = static_cast<std::uint32_t>(list.size());
@@ -216,7 +232,7 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
 std::optional<std::size_t> runDensityPass(ParticleSet& p, HydroWorkspace& ws) {
   ws.neighbourCount.resize(p.numReal);
   if (ws.sph.viscosityReconstruction != ViscosityReconstruction::None)
-    for (std::vector<double>& component : ws.velocityGradient) component.assign(p.size(), 0.0);
+    ws.velocityGradient.assign(9 * p.size(), 0.0);  // components beyond D stay 0
   if (ws.geometry == Geometry::Axisymmetric) {
     ws.smoothedR.resize(p.size());
     ws.dSmoothedR.resize(p.size());

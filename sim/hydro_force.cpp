@@ -168,6 +168,7 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws) {
     double acc[3] = {0.0, 0.0, 0.0};
     double grad[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};  // -L_i
     double dudtDivergence = 0.0, dudtViscous = 0.0, dudtConduction = 0.0;
+    const double* gradientI = reconstruct ? &ws.velocityGradient[9 * i] : nullptr;
 
     for (std::uint32_t j : ws.lists.pairs(i)) {
       double dx[3] = {0.0, 0.0, 0.0}, dv[3] = {0.0, 0.0, 0.0};
@@ -191,19 +192,24 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws) {
       double visc = 0.0;
       const double cij = 0.5 * (ci + p.cs[j]);
       const double sigmaIJ = 0.5 * (sigmaI + sigmaJ);
-      // Reconstructed: the approach of the velocities carried to the midpoint. It may only take
-      // viscosity away: capped at the raw approach, so the viscous heating stays positive and the
-      // force is continuous as a pair turns from approaching to receding.
-      const double approach =
-          reconstruct && vdotx < 0.0
-              ? std::max(reconstructedApproach<D>(dx, dv, ws.velocityGradient, i, j), vdotx)
-              : vdotx;
-      if (approach < 0.0) {
+      if (vdotx < 0.0) {
         const double hij = 0.5 * (hi + hj);
-        const double mu = hij * approach / (r2 + eps * hij * hij);
+        const double mu = hij * vdotx / (r2 + eps * hij * hij);
+        // Reconstructed: the linear term sees the approach of the velocities carried to the
+        // midpoint, kept between the raw approach and zero, so the reconstruction only ever takes
+        // viscosity away and the force stays continuous as a pair turns from approaching to
+        // receding (test: the quarter box). The quadratic term keeps the raw approach: it is the
+        // strong-shock term (negligible at a weak shock, where the linear term's width is the
+        // problem), and without it the noise behind a strong blast grows (docs/undex.md).
+        const double muLinear =
+            reconstruct
+                ? mu * std::clamp(reconstructedApproach<D>(dx, dv, gradientI,
+                                                           &ws.velocityGradient[9 * j]) / vdotx,
+                                  0.0, 1.0)
+                : mu;
         const double alphaIJ = evolveAlpha ? 0.5 * (alphaOf[i] + alphaOf[j]) : alpha;
         const double betaIJ = evolveAlpha ? betaPerAlpha * alphaIJ : beta;
-        visc = (-alphaIJ * cij * mu + betaIJ * mu * mu) / sigmaIJ;
+        visc = (-alphaIJ * cij * muLinear + betaIJ * mu * mu) / sigmaIJ;
         if (balsara) visc *= 0.5 * (shearFactor[i] + shearFactor[j]);
       }
       const double fVisc = mj * visc * dWavg * rInv;

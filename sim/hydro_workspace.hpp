@@ -1,7 +1,6 @@
 #pragma once
 // Per-step scratch shared by the density and force passes: neighbour structures and the
 // per-particle quantities that are not part of the particle state.
-#include <array>
 #include <optional>
 #include <vector>
 
@@ -34,10 +33,11 @@ struct HydroWorkspace {
   std::vector<unsigned char> yieldCarriesDamage;
   // Artificial stress epsilon in effect (0 = off).
   double artificialStress = 0.0;
-  // Velocity gradient dv_a/dx_b of every particle (real and ghost) at component 3 a + b, linearly
+  // Velocity gradient dv_a/dx_b of every particle (real and ghost), 9 values per particle with
+  // dv_a/dx_b at 9 i + 3 a + b (the pair loop reads a neighbour's whole tensor at once), linearly
   // corrected so that it is exact for a linear field; filled only when the viscosity
   // reconstructs velocities (SphOptions::viscosityReconstruction), empty otherwise.
-  std::array<std::vector<double>, 9> velocityGradient;
+  std::vector<double> velocityGradient;
   // Number of neighbours in each real particle's gather list (diagnostics).
   std::vector<std::uint32_t> neighbourCount;
 };

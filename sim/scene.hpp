@@ -38,13 +38,14 @@ enum class MomentumForm { Lagrangian, Interface };
 // constant; MorrisMonaghan evolves alpha_i between alpha_min and alpha (Morris & Monaghan 1997).
 enum class ViscositySwitch { None, MorrisMonaghan };
 
-// Velocities the viscosity compares (docs/undex.md, "Reconstructed viscosity"): None takes the
-// particles' own. VanLeer carries each to the pair's midpoint along its velocity gradient, limited
-// by van Leer's limiter of the two slopes, so that smooth flow (where the two reconstructions
-// meet) feels no viscosity and a shock (where the limiter stops the reconstruction) the full one.
-// Monotone first limits each particle's gradient (Barth & Jespersen) so that no reconstructed
-// velocity leaves the range of those the particle sees, which damps the ringing behind a shock
-// that VanLeer leaves.
+// Velocities the viscosity's linear term compares (docs/undex.md, "The reconstructed viscosity"):
+// None takes the particles' own. VanLeer carries each to the pair's midpoint along its velocity
+// gradient, limited by van Leer's limiter of the two slopes, so that smooth flow (where the two
+// reconstructions meet) feels no viscosity and a shock (where the limiter stops the
+// reconstruction) the full one. Monotone first limits each particle's gradient (Barth &
+// Jespersen) so that no reconstructed velocity leaves the range of those around it, which damps
+// the ringing that VanLeer leaves behind a weak shock. The quadratic term always takes the raw
+// velocities.
 enum class ViscosityReconstruction { None, VanLeer, Monotone };
 
 struct AxisBounds {

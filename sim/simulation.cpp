@@ -15,7 +15,6 @@
 #include "sim/fracture.hpp"
 #include "sim/hydro_force.hpp"
 #include "sim/programmed_burn.hpp"
-#include "sim/velocity_reconstruction.hpp"
 
 namespace ejecta {
 
@@ -183,7 +182,7 @@ void Simulation::evaluateDerivatives() {
   evaluateEquationOfState();
   boundaries_.refreshGhosts(p_);
   if (scene_.sph.viscosityReconstruction != ViscosityReconstruction::None)
-    boundaries_.refreshGhostTensor(p_.numReal, ws_.velocityGradient, p_.ghostSource);
+    boundaries_.refreshGhostTensor(p_, ws_.velocityGradient);
   if (ws_.geometry == Geometry::Axisymmetric) {
     for (std::size_t g = p_.numReal; g < p_.size(); ++g) {
       const std::size_t s = p_.ghostSource[g - p_.numReal];
@@ -198,10 +197,6 @@ void Simulation::evaluateDerivatives() {
             ws_.lists.buildPairs<2>(p_, kKernelSupport); break;
     default: ws_.lists.findGhostGathers<3>(p_, ws_.grid, kKernelSupport);
              ws_.lists.buildPairs<3>(p_, kKernelSupport); break;
-  }
-  if (scene_.sph.viscosityReconstruction == ViscosityReconstruction::Monotone) {
-    limitVelocityGradients(p_, ws_);
-    boundaries_.refreshGhostTensor(p_.numReal, ws_.velocityGradient, p_.ghostSource);
   }
   runForcePass(p_, ws_);
   computeCrackGrowth(p_, materials_, flaws_, dim);

@@ -1,6 +1,6 @@
 #pragma once
-// Limited linear reconstruction of velocities for the artificial viscosity (docs/undex.md,
-// "Reconstructed viscosity").
+// Limited linear reconstruction of velocities for the artificial viscosity's linear term
+// (docs/undex.md, "The reconstructed viscosity").
 //
 // The Monaghan viscosity acts on the velocity jump between two particles. In a smooth flow that
 // jump is the velocity gradient times the spacing, so a constant-alpha viscosity damps every
@@ -14,13 +14,8 @@
 // SPH by N. Frontiere, C. D. Raskin & J. M. Owen (J. Comput. Phys. 332, 160, 2017, CRKSPH) and
 // S. Rosswog (MNRAS 498, 4230, 2020, MAGMA2).
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstddef>
-#include <vector>
-
-#include "sim/hydro_workspace.hpp"
-#include "sim/particles.hpp"
 
 namespace ejecta {
 
@@ -35,51 +30,74 @@ template <int D>
 bool correctedGradient(const double A[3][3], const double M[3][3], double G[3][3]) {
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b) G[a][b] = 0.0;
-  double inv[3][3] = {};
+  double adjugate[3][3] = {};
   double det, scale;
   if constexpr (D == 1) {
     det = M[0][0];
     scale = std::abs(M[0][0]);
-    inv[0][0] = 1.0;
+    adjugate[0][0] = 1.0;
   } else if constexpr (D == 2) {
     det = M[0][0] * M[1][1] - M[0][1] * M[1][0];
     scale = 0.5 * std::abs(M[0][0] + M[1][1]);
     scale *= scale;
-    inv[0][0] = M[1][1];
-    inv[0][1] = -M[0][1];
-    inv[1][0] = -M[1][0];
-    inv[1][1] = M[0][0];
+    adjugate[0][0] = M[1][1];
+    adjugate[0][1] = -M[0][1];
+    adjugate[1][0] = -M[1][0];
+    adjugate[1][1] = M[0][0];
   } else {
-    inv[0][0] = M[1][1] * M[2][2] - M[1][2] * M[2][1];
-    inv[0][1] = M[0][2] * M[2][1] - M[0][1] * M[2][2];
-    inv[0][2] = M[0][1] * M[1][2] - M[0][2] * M[1][1];
-    inv[1][0] = M[1][2] * M[2][0] - M[1][0] * M[2][2];
-    inv[1][1] = M[0][0] * M[2][2] - M[0][2] * M[2][0];
-    inv[1][2] = M[0][2] * M[1][0] - M[0][0] * M[1][2];
-    inv[2][0] = M[1][0] * M[2][1] - M[1][1] * M[2][0];
-    inv[2][1] = M[0][1] * M[2][0] - M[0][0] * M[2][1];
-    inv[2][2] = M[0][0] * M[1][1] - M[0][1] * M[1][0];
-    det = M[0][0] * inv[0][0] + M[0][1] * inv[1][0] + M[0][2] * inv[2][0];
+    adjugate[0][0] = M[1][1] * M[2][2] - M[1][2] * M[2][1];
+    adjugate[0][1] = M[0][2] * M[2][1] - M[0][1] * M[2][2];
+    adjugate[0][2] = M[0][1] * M[1][2] - M[0][2] * M[1][1];
+    adjugate[1][0] = M[1][2] * M[2][0] - M[1][0] * M[2][2];
+    adjugate[1][1] = M[0][0] * M[2][2] - M[0][2] * M[2][0];
+    adjugate[1][2] = M[0][2] * M[1][0] - M[0][0] * M[1][2];
+    adjugate[2][0] = M[1][0] * M[2][1] - M[1][1] * M[2][0];
+    adjugate[2][1] = M[0][1] * M[2][0] - M[0][0] * M[2][1];
+    adjugate[2][2] = M[0][0] * M[1][1] - M[0][1] * M[1][0];
+    det = M[0][0] * adjugate[0][0] + M[0][1] * adjugate[1][0] + M[0][2] * adjugate[2][0];
     scale = std::abs(M[0][0] + M[1][1] + M[2][2]) / 3.0;
     scale = scale * scale * scale;
   }
   // For a full, isotropic neighbourhood det = scale; along a free edge det/scale falls toward 0.
-  // 1e-3 keeps every interior and most surface particles and refuses near-degenerate ones.
+  // 1e-3 refuses neighbourhoods that are nearly a line (2D) or a plane (3D): a filament or a
+  // sheet one particle thick, where the gradient across it is unknown.
   if (!(std::abs(det) > 1e-3 * scale)) return false;
   for (int a = 0; a < D; ++a)
     for (int b = 0; b < D; ++b) {
       double sum = 0.0;
-      for (int c = 0; c < D; ++c) sum += A[a][c] * inv[c][b];
+      for (int c = 0; c < D; ++c) sum += A[a][c] * adjugate[c][b];
       G[a][b] = sum / det;
     }
   return true;
 }
 
-// Barth & Jespersen's limiter on each particle's gradient (T. J. Barth & D. C. Jespersen,
-// AIAA 89-0366, 1989): each row of G is scaled so that the velocity reconstructed to the midpoint
-// of every pair stays within the range of the velocities the particle sees. Real particles only;
-// ghosts take their source's limited gradient afterwards.
-void limitVelocityGradients(const ParticleSet& p, HydroWorkspace& ws);
+// Barth & Jespersen's limiter on a particle's gradient (T. J. Barth & D. C. Jespersen,
+// AIAA 89-0366, 1989): scales row a of G by phi_a in [0, 1] so that the velocity reconstructed to
+// the midpoint of every pair, v_a,i + phi_a G_a . (x_j - x_i)/2, stays within [low_a, high_a], the
+// range of v_a over the particle and its neighbours. `offsets` holds x_i - x_j for the `count`
+// neighbours, D values each. phi_a is set by the neighbour the reconstruction moves furthest
+// toward either bound, so only the extreme changes are needed; a particle at an extremum of v_a
+// gets phi_a = 0.
+template <int D>
+void limitToNeighbourRange(double G[3][3], const double vi[3], const double low[3],
+                           const double high[3], const double* offsets, std::size_t count) {
+  double rise[3] = {0.0, 0.0, 0.0}, fall[3] = {0.0, 0.0, 0.0};  // largest change up and down
+  for (std::size_t k = 0; k < count; ++k) {
+    const double* dx = offsets + D * k;
+    for (int a = 0; a < D; ++a) {
+      double delta = 0.0;
+      for (int b = 0; b < D; ++b) delta -= 0.5 * G[a][b] * dx[b];
+      rise[a] = std::max(rise[a], delta);
+      fall[a] = std::min(fall[a], delta);
+    }
+  }
+  for (int a = 0; a < D; ++a) {
+    double phi = 1.0;
+    if (rise[a] > 0.0) phi = std::min(phi, (high[a] - vi[a]) / rise[a]);
+    if (fall[a] < 0.0) phi = std::min(phi, (low[a] - vi[a]) / fall[a]);
+    for (int b = 0; b < D; ++b) G[a][b] *= phi;
+  }
+}
 
 // Van Leer's limiter as a function of the ratio of the two one-sided slopes: 1 when they agree,
 // falling to 0 as they differ by a large factor in either direction, 0 when they differ in sign.
@@ -91,26 +109,28 @@ inline double vanLeerLimiter(double ratio) {
 }
 
 // The pair's velocity difference after reconstruction to the midpoint, projected on dx:
-//   (v_i* - v_j*) . dx = [dv - phi (G_i + G_j) dx / 2] . dx,   dx = x_i - x_j, dv = v_i - v_j,
-// phi the van Leer limiter of the ratio of the two slopes dx . G dx. Negative: the reconstructed
-// velocities approach. G holds every particle's gradient at component 3 a + b.
+//   (v_i* - v_j*) . dx = dv . dx - phi (s_i + s_j) / 2,   dx = x_i - x_j, dv = v_i - v_j,
+// with the slopes s = dx . G dx of the two particles and phi = vanLeerLimiter(s_i / s_j). Since
+// phi (s_i + s_j) / 2 = 2 s_i s_j / (s_i + s_j) (van Leer's harmonic mean) when the slopes share a
+// sign, and 0 otherwise, that form is used: it is the same in exact arithmetic and bit for bit
+// symmetric in i and j, so the pair force conserves momentum to round-off. Negative: the
+// reconstructed velocities approach. Gi and Gj point to the particles' 3 x 3 gradients (row-major).
 template <int D>
-double reconstructedApproach(const double dx[3], const double dv[3],
-                             const std::array<std::vector<double>, 9>& G, std::size_t i,
-                             std::size_t j) {
+inline double reconstructedApproach(const double dx[3], const double dv[3], const double* Gi,
+                                    const double* Gj) {
   double slopeI = 0.0, slopeJ = 0.0, approach = 0.0;
   for (int a = 0; a < D; ++a) {
     double deltaI = 0.0, deltaJ = 0.0;
     for (int b = 0; b < D; ++b) {
-      deltaI += G[3 * a + b][i] * dx[b];
-      deltaJ += G[3 * a + b][j] * dx[b];
+      deltaI += Gi[3 * a + b] * dx[b];
+      deltaJ += Gj[3 * a + b] * dx[b];
     }
     slopeI += deltaI * dx[a];
     slopeJ += deltaJ * dx[a];
     approach += dv[a] * dx[a];
   }
-  const double phi = slopeJ != 0.0 ? vanLeerLimiter(slopeI / slopeJ) : 0.0;
-  return approach - 0.5 * phi * (slopeI + slopeJ);
+  const double product = slopeI * slopeJ;
+  return product > 0.0 ? approach - 2.0 * product / (slopeI + slopeJ) : approach;
 }
 
 }  // namespace ejecta
