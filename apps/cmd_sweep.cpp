@@ -178,18 +178,22 @@ int sweepCommand(const SweepArgs& args) {
         columns.push_back(key);
         break;
       }
+  // The chart takes completed variants only: a run that stopped still writes its shares so far
+  // (sweep.csv keeps them, marked failed), and a chart would draw them as results.
   for (const std::string& c : columns) {
     csv << ',' << c;
     auto& column = numeric[c];
-    for (const auto& v : values) {
-      const auto it = v.find(c);
-      column.push_back(it == v.end() ? std::nullopt : std::optional<double>(it->second));
+    for (std::size_t k = 0; k < variants.size(); ++k) {
+      const auto it = values[k].find(c);
+      column.push_back(it == values[k].end() || status[k] != 0 ? std::nullopt
+                                                                  : std::optional<double>(it->second));
     }
   }
   csv << ",label\n";  // the variant's values as a chart's tick label
   csv.precision(8);
   std::printf("%-8s", "variant");
   for (const SweepAxis& a : axes) std::printf("  %-24s", a.key.c_str());
+  std::printf("  %-9s", "status");
   for (const std::string& c : columns) std::printf("  %-14.14s", c.c_str());
   std::printf("\n");
   for (std::size_t k = 0; k < variants.size(); ++k) {
@@ -200,6 +204,7 @@ int sweepCommand(const SweepArgs& args) {
       std::printf("  %-24s", a.values[k].c_str());
     }
     csv << ',' << (status[k] == 0 ? "completed" : "failed");
+    std::printf("  %-9s", status[k] == 0 ? "completed" : "FAILED");
     for (const std::string& c : columns) {
       const auto it = values[k].find(c);
       if (it != values[k].end()) {
