@@ -8,6 +8,7 @@
 #include <string>
 
 #include "support/command_line.hpp"
+#include "support/periodic_blast.hpp"
 
 namespace fs = std::filesystem;
 
@@ -18,46 +19,15 @@ using ejecta::test::readTextFile;
 using ejecta::test::runCommand;
 using ejecta::test::writeTextFile;
 
-const char* kBlast = R"(
-[scene]
-name = "sweep_blast"
-dimension = "2d"
-[domain]
-x = { min = -0.5, max = 0.5, boundary = "periodic" }
-y = { min = -0.5, max = 0.5, boundary = "periodic" }
-[time]
-t_end = 0.005
-[output]
-snapshots = false
-[[materials]]
-name = "gas"
-eos = "ideal_gas"
-gamma = 1.4
-[[bodies]]
-name = "box"
-material = "gas"
-shape = "box"
-min = [-0.5, -0.5]
-max = [0.5, 0.5]
-spacing = 0.05
-density = 1.0
-pressure = 1e-4
-[[energy_deposits]]
-name = "blast"
-energy = 0.1
-center = [0.0, 0.0]
-radius = 0.06
-)";
-
 TEST(SweepCommand, AStoppedVariantIsMarkedFailed) {
   const fs::path dir = fs::temp_directory_path() / ("ejecta_chain_sweep_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
-  writeTextFile(dir / "blast.toml", kBlast);
+  writeTextFile(dir / "blast.toml", ejecta::test::periodicBlastScene());
   // Variant 1 asks for a smallest step far above the blast's first one: it stops at once.
   std::string output;
   const int rc = runCommand(kEjecta + " sweep " + (dir / "blast.toml").string() +
-                                " --vary 'time.dt_min=0,0.01' --jobs 1 --out " +
+                                " --vary 'time.dt_min=0,0.01' --set 'time.t_end=0.005' --jobs 1 --out " +
                                 (dir / "out").string(),
                             output);
   EXPECT_EQ(rc, 2) << output;
