@@ -23,7 +23,7 @@ struct ChartSeries {
   std::string x{};              // this series' x column (default: the chart's)
   std::filesystem::path csv{};  // this series' file (default: the chart's)
   bool reference = false;       // an exact or reference curve: dashed black
-  bool markers = false;         // points joined by lines
+  bool markers = false;         // points joined by lines, in order of x
   bool points = false;          // small dots, no line: every particle of a profile
 };
 

@@ -127,7 +127,10 @@ def draw(spec, base):
             if entry.get("reference"):
                 axes.plot(x, y, "k--", linewidth=1.5, label=label, zorder=3)
             elif entry.get("markers"):
-                axes.plot(x, y, "o-", linewidth=1.5, markersize=5, label=label)
+                # Joined in order of x, whatever order the rows are in (a sweep's variants).
+                order = sorted(range(len(x)), key=lambda k: x[k])
+                axes.plot([x[k] for k in order], [y[k] for k in order], "o-", linewidth=1.5,
+                          markersize=5, label=label)
             elif entry.get("points"):
                 # Every particle of a profile: small dots, no line (they scatter about the curve).
                 axes.plot(x, y, ".", markersize=2, alpha=0.6, label=label, rasterized=True)
