@@ -99,22 +99,20 @@ void limitToNeighbourRange(double G[3][3], const double vi[3], const double low[
   }
 }
 
-// Van Leer's limiter as a function of the ratio of the two one-sided slopes: 1 when they agree,
-// falling to 0 as they differ by a large factor in either direction, 0 when they differ in sign.
-// Symmetric under r -> 1/r, so a pair's limiter does not depend on which particle is i.
-inline double vanLeerLimiter(double ratio) {
-  if (!(ratio > 0.0)) return 0.0;  // opposite signs, zero or NaN: no reconstruction
-  const double denom = 1.0 + ratio;
-  return std::min(1.0, 4.0 * ratio / (denom * denom));
+// The limited slope of a pair: phi (s_i + s_j) / 2 with van Leer's limiter phi = 4 r / (1 + r)^2
+// of the slopes' ratio r = s_i / s_j, which is 1 when they agree and falls to 0 as they differ by a
+// large factor either way. Written as van Leer's harmonic mean 2 s_i s_j / (s_i + s_j): the same in
+// exact arithmetic, and bit for bit symmetric in i and j, so the pair force conserves momentum to
+// round-off. 0 when the slopes differ in sign (an extremum between the two) or either is 0.
+inline double vanLeerSlope(double slopeI, double slopeJ) {
+  const double product = slopeI * slopeJ;
+  return product > 0.0 ? 2.0 * product / (slopeI + slopeJ) : 0.0;
 }
 
 // The pair's velocity difference after reconstruction to the midpoint, projected on dx:
-//   (v_i* - v_j*) . dx = dv . dx - phi (s_i + s_j) / 2,   dx = x_i - x_j, dv = v_i - v_j,
-// with the slopes s = dx . G dx of the two particles and phi = vanLeerLimiter(s_i / s_j). Since
-// phi (s_i + s_j) / 2 = 2 s_i s_j / (s_i + s_j) (van Leer's harmonic mean) when the slopes share a
-// sign, and 0 otherwise, that form is used: it is the same in exact arithmetic and bit for bit
-// symmetric in i and j, so the pair force conserves momentum to round-off. Negative: the
-// reconstructed velocities approach. Gi and Gj point to the particles' 3 x 3 gradients (row-major).
+//   (v_i* - v_j*) . dx = dv . dx - vanLeerSlope(s_i, s_j),   dx = x_i - x_j, dv = v_i - v_j,
+// with the slopes s = dx . G dx of the two particles. Negative: the reconstructed velocities
+// approach. Gi and Gj point to the particles' 3 x 3 gradients (row-major).
 template <int D>
 inline double reconstructedApproach(const double dx[3], const double dv[3], const double* Gi,
                                     const double* Gj) {
@@ -129,8 +127,7 @@ inline double reconstructedApproach(const double dx[3], const double dv[3], cons
     slopeJ += deltaJ * dx[a];
     approach += dv[a] * dx[a];
   }
-  const double product = slopeI * slopeJ;
-  return product > 0.0 ? approach - 2.0 * product / (slopeI + slopeJ) : approach;
+  return approach - vanLeerSlope(slopeI, slopeJ);
 }
 
 }  // namespace ejecta

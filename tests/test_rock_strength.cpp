@@ -15,6 +15,7 @@
 #include "sim/solid_state.hpp"
 #include "sim/strength.hpp"
 #include "sim/tensor.hpp"
+#include "support/material_scene_error.hpp"
 
 namespace ejecta {
 namespace {
@@ -341,13 +342,7 @@ spacing = 0.1
 density = 2680.0
 pressure = 0.0
 )";
-    try {
-      const Scene s = parseScene(text, "bad.toml");
-      MaterialTable::fromScene(s);
-    } catch (const SceneError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+    return test::materialSceneError(text);
   };
   const std::string full =
       "shear_modulus = \"25 GPa\"\ncohesion = \"90 MPa\"\nfriction_intact = 2\n"

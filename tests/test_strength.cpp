@@ -18,6 +18,7 @@
 #include "sim/strength.hpp"
 #include "sim/tensor.hpp"
 #include "sim/thermal.hpp"
+#include "support/material_scene_error.hpp"
 
 namespace fs = std::filesystem;
 
@@ -494,13 +495,7 @@ spacing = 0.1
 density = 2785.0
 pressure = 0.0
 )";
-    try {
-      const Scene s = parseScene(text, "bad.toml");
-      MaterialTable::fromScene(s);
-    } catch (const SceneError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+    return test::materialSceneError(text);
   };
   EXPECT_NE(error("[materials.strength]\nshear_modulus = \"27 GPa\"\n").find("strength.model"),
             std::string::npos);

@@ -95,17 +95,24 @@ TEST(ViscosityReconstruction, DegenerateNeighbourhoodGivesNoGradient) {
     for (int b = 0; b < 3; ++b) EXPECT_EQ(G[a][b], 0.0);
 }
 
-TEST(ViscosityReconstruction, VanLeerLimiter) {
-  EXPECT_EQ(vanLeerLimiter(1.0), 1.0);  // equal slopes: full reconstruction
-  EXPECT_EQ(vanLeerLimiter(0.0), 0.0);
-  EXPECT_EQ(vanLeerLimiter(-2.0), 0.0);  // slopes of opposite sign: an extremum
-  EXPECT_EQ(vanLeerLimiter(std::numeric_limits<double>::quiet_NaN()), 0.0);
-  EXPECT_DOUBLE_EQ(vanLeerLimiter(3.0), 0.75);  // 4 * 3 / 16
-  for (double r : {0.01, 0.2, 0.5, 0.9, 2.0, 7.0, 1e3}) {
-    EXPECT_DOUBLE_EQ(vanLeerLimiter(r), vanLeerLimiter(1.0 / r)) << r;  // pair symmetry
-    EXPECT_GE(vanLeerLimiter(r), 0.0);
-    EXPECT_LE(vanLeerLimiter(r), 1.0);
-  }
+TEST(ViscosityReconstruction, VanLeerSlope) {
+  // Van Leer's limiter phi(r) = 4 r / (1 + r)^2 of r = s_i / s_j, applied to the mean slope.
+  auto limited = [](double si, double sj) {
+    const double r = si / sj;
+    return 4.0 * r / ((1.0 + r) * (1.0 + r)) * 0.5 * (si + sj);
+  };
+  EXPECT_EQ(vanLeerSlope(2.5, 2.5), 2.5);     // equal slopes: full reconstruction
+  EXPECT_EQ(vanLeerSlope(0.0, 3.0), 0.0);
+  EXPECT_EQ(vanLeerSlope(-2.0, 1.0), 0.0);    // slopes of opposite sign: an extremum
+  EXPECT_EQ(vanLeerSlope(std::numeric_limits<double>::quiet_NaN(), 1.0), 0.0);
+  EXPECT_DOUBLE_EQ(vanLeerSlope(3.0, 1.0), 1.5);  // phi(3) = 0.75 times the mean 2
+  for (double si : {0.01, 0.2, 0.5, 0.9, 2.0, 7.0, 1e3})
+    for (double sign : {1.0, -1.0}) {
+      const double a = sign * si, b = sign * 1.3;
+      EXPECT_EQ(vanLeerSlope(a, b), vanLeerSlope(b, a)) << si;  // pair symmetry, to the bit
+      EXPECT_NEAR(vanLeerSlope(a, b), limited(a, b), 1e-14 * std::abs(a + b)) << si;
+      EXPECT_LE(std::abs(vanLeerSlope(a, b)), 0.5 * std::abs(a + b));  // phi <= 1
+    }
 }
 
 TEST(ViscosityReconstruction, NoApproachLeftInALinearFlow) {
