@@ -12,10 +12,10 @@
 #include "fields/grid_set.hpp"
 #include "fields/measure_crater.hpp"
 #include "fields/vdb_grids.hpp"
-#include "sim/atomic_file.hpp"
-#include "sim/run.hpp"
-#include "sim/snapshot.hpp"
-#include "sim/units.hpp"
+#include "sim/io/atomic_file.hpp"
+#include "sim/run/run.hpp"
+#include "sim/io/snapshot.hpp"
+#include "sim/setup/units.hpp"
 
 namespace fs = std::filesystem;
 

@@ -5,9 +5,9 @@
 #include "fields/crater_setup.hpp"
 #include "fields/grid_set.hpp"
 #include "fields/vdb_grids.hpp"
-#include "sim/run.hpp"
-#include "sim/snapshot.hpp"
-#include "sim/units.hpp"
+#include "sim/run/run.hpp"
+#include "sim/io/snapshot.hpp"
+#include "sim/setup/units.hpp"
 
 namespace ejecta::app {
 

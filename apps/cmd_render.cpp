@@ -13,8 +13,8 @@
 #include "apps/grid_images.hpp"
 #include "apps/particle_images.hpp"
 #include "fields/grid_slice.hpp"
-#include "sim/snapshot.hpp"
-#include "sim/units.hpp"
+#include "sim/io/snapshot.hpp"
+#include "sim/setup/units.hpp"
 
 namespace fs = std::filesystem;
 

@@ -8,9 +8,9 @@
 #include "apps/run_images.hpp"
 #include "apps/run_thermal.hpp"
 #include "fields/run_outputs.hpp"
-#include "sim/embedded_scenes.hpp"
-#include "sim/run.hpp"
-#include "sim/scene.hpp"
+#include "sim/setup/embedded_scenes.hpp"
+#include "sim/run/run.hpp"
+#include "sim/setup/scene.hpp"
 
 namespace fs = std::filesystem;
 
@@ -98,7 +98,7 @@ void printSummary(const RunOutcome& r, const std::string& outDir) {
     std::printf("  shield: %s\n", text("thermal_shield").c_str());
   }
   if (extra("thermal_note")) std::printf("  thermal: %s\n", text("thermal_note").c_str());
-  // One line per gauge: the pulse it recorded (sim/gauge_decay.hpp).
+  // One line per gauge: the pulse it recorded (sim/sources/gauge_decay.hpp).
   for (const auto& [k, v] : s.extras) {
     const std::string suffix = "_peak_pressure_Pa";
     if (k.rfind("gauge_", 0) != 0 || k.size() <= suffix.size() + 6 ||

@@ -21,9 +21,9 @@
 #include "apps/commands.hpp"
 #include "apps/sweep_chart.hpp"
 #include "render/charts.hpp"
-#include "sim/atomic_file.hpp"
-#include "sim/scene.hpp"
-#include "sim/sweep.hpp"
+#include "sim/io/atomic_file.hpp"
+#include "sim/setup/scene.hpp"
+#include "sim/run/sweep.hpp"
 
 extern char** environ;
 

@@ -20,8 +20,8 @@
 #include "apps/thermal_charts.hpp"
 #include "apps/thermal_outputs.hpp"
 #include "radiation/thermal_study.hpp"
-#include "sim/run.hpp"
-#include "sim/snapshot.hpp"
+#include "sim/run/run.hpp"
+#include "sim/io/snapshot.hpp"
 
 namespace ejecta::app {
 

@@ -7,7 +7,7 @@
 // Lagrangian hydrocode (sim/exact/radial_lagrangian.hpp) runs to the scene's t_end with the outer
 // node free at the medium's initial pressure, writes DIR/gauges_reference.csv (the layout of the
 // SPH run's gauges.csv; default DIR runs/<scene name>, beside it) and prints the medium's share
-// of the yield, each gauge's pulse (sim/gauge_decay.hpp) and, for a sphere, Cole's similitude
+// of the yield, each gauge's pulse (sim/sources/gauge_decay.hpp) and, for a sphere, Cole's similitude
 // values.
 #include <array>
 #include <chrono>
@@ -19,14 +19,14 @@
 #include <vector>
 
 #include "apps/commands.hpp"
-#include "sim/atomic_file.hpp"
+#include "sim/io/atomic_file.hpp"
 #include "sim/exact/radial_lagrangian.hpp"
-#include "sim/gauge_decay.hpp"
-#include "sim/gauges.hpp"
-#include "sim/jwl.hpp"
-#include "sim/materials.hpp"
-#include "sim/programmed_burn.hpp"
-#include "sim/scene.hpp"
+#include "sim/sources/gauge_decay.hpp"
+#include "sim/sources/gauges.hpp"
+#include "sim/eos/jwl.hpp"
+#include "sim/solid/materials.hpp"
+#include "sim/sources/programmed_burn.hpp"
+#include "sim/setup/scene.hpp"
 
 namespace fs = std::filesystem;
 
@@ -209,7 +209,7 @@ double coleTheta(double w, double r) {
 int undexReferenceCommand(const UndexReferenceArgs& args) {
   const Scene scene = loadScene(args.scene, args.overrides);
   const MaterialTable materials = MaterialTable::fromScene(scene);
-  const BurnTable burn = burnTable(scene, materials);
+  const BurnTable burn = burnTable(scene.detonations, materials);
   const RadialScene rs = radialScene(scene, materials);
   if (args.zones < 4)
     throw std::invalid_argument("--zones: at least 4 (got " + std::to_string(args.zones) + ")");
@@ -276,7 +276,7 @@ int undexReferenceCommand(const UndexReferenceArgs& args) {
   // stretched around the growing bubble), so rows are kept at least t_end / 20000 apart (36 ns
   // for 0.72 ms: a crest rising over ~1 us is still sampled to ~0.1%); the printed pulses below
   // are measured on every step.
-  std::string csv = gaugeHeader(scene) + "\n";
+  std::string csv = gaugeHeader(gaugeLayout(scene)) + "\n";
   const std::vector<exact::RadialGauge>& gauges = run.gauges();
   std::vector<Point> direction(gauges.size());
   for (std::size_t g = 0; g < gauges.size(); ++g)
@@ -299,7 +299,7 @@ int undexReferenceCommand(const UndexReferenceArgs& args) {
     }
     char head[64];
     std::snprintf(head, sizeof head, "%zu,%.10g", row, t);
-    csv += head + gaugeRow(scene, readings) + "\n";
+    csv += head + gaugeRow(gaugeLayout(scene), readings) + "\n";
   }
   const fs::path out = args.outDir.empty() ? fs::path("runs") / scene.name : fs::path(args.outDir);
   fs::create_directories(out);

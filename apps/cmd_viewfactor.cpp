@@ -11,7 +11,7 @@
 #include "radiation/geometry_file.hpp"
 #include "radiation/view_factor_convergence.hpp"
 #include "render/charts.hpp"
-#include "sim/atomic_file.hpp"
+#include "sim/io/atomic_file.hpp"
 
 namespace fs = std::filesystem;
 

@@ -10,7 +10,7 @@
 #include "apps/json_text.hpp"
 #include "radiation/whipple_study.hpp"
 #include "render/charts.hpp"
-#include "sim/atomic_file.hpp"
+#include "sim/io/atomic_file.hpp"
 
 namespace ejecta::app {
 

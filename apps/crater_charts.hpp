@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "render/charts.hpp"
-#include "sim/scene.hpp"
+#include "sim/setup/scene.hpp"
 
 namespace ejecta::app {
 

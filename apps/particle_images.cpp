@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #include "render/png_io.hpp"
-#include "sim/particle_fields.hpp"
+#include "sim/state/particle_fields.hpp"
 
 namespace ejecta::app {
 

@@ -9,13 +9,13 @@
 #include <vector>
 
 #include "render/renderer.hpp"
-#include "sim/particles.hpp"
-#include "sim/scene.hpp"
+#include "sim/state/particles.hpp"
+#include "sim/setup/scene.hpp"
 
 namespace ejecta::app {
 
 struct ParticleImageOptions {
-  std::string field = "density";  // a field of sim/particle_fields.hpp
+  std::string field = "density";  // a field of sim/state/particle_fields.hpp
   bool log = false;
   std::string cut = "z";          // 3D: keep the half with x, y or z <= cutAt ("none": no cut)
   double cutAt = 0.0;             // [m]

@@ -15,8 +15,8 @@
 #include "fields/run_outputs.hpp"
 #include "render/charts.hpp"
 #include "render/frame_names.hpp"
-#include "sim/energy_ledger.hpp"
-#include "sim/simulation.hpp"
+#include "sim/run/energy_ledger.hpp"
+#include "sim/run/simulation.hpp"
 
 namespace fs = std::filesystem;
 

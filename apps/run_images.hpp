@@ -4,8 +4,8 @@
 // them (images/grid_<name>_NNNN.png, images/surface_NNNN.png; apps/grid_images.hpp), and charts
 // of energy.csv (and gauges.csv) at the end of every run when python3 with matplotlib is present
 // (the CSVs are always written).
-#include "sim/run.hpp"
-#include "sim/scene.hpp"
+#include "sim/run/run.hpp"
+#include "sim/setup/scene.hpp"
 
 namespace ejecta::app {
 

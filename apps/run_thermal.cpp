@@ -14,8 +14,8 @@
 #include "apps/thermal_picture.hpp"
 #include "radiation/format_number.hpp"
 #include "render/charts.hpp"
-#include "sim/embedded_scenes.hpp"
-#include "sim/simulation.hpp"
+#include "sim/setup/embedded_scenes.hpp"
+#include "sim/run/simulation.hpp"
 
 namespace fs = std::filesystem;
 

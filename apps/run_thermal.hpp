@@ -15,8 +15,8 @@
 #include <string>
 
 #include "radiation/thermal_study.hpp"
-#include "sim/run.hpp"
-#include "sim/scene.hpp"
+#include "sim/run/run.hpp"
+#include "sim/setup/scene.hpp"
 
 namespace ejecta::app {
 

@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "radiation/emitters.hpp"
-#include "sim/geometry.hpp"
-#include "sim/particles.hpp"
+#include "sim/state/geometry.hpp"
+#include "sim/state/particles.hpp"
 
 namespace ejecta::app {
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/sweep.hpp"
+#include "sim/run/sweep.hpp"
 
 namespace ejecta::app {
 

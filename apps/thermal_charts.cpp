@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "sim/atomic_file.hpp"
+#include "sim/io/atomic_file.hpp"
 
 namespace fs = std::filesystem;
 

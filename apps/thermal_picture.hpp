@@ -11,8 +11,8 @@
 
 #include "radiation/thermal_study.hpp"
 #include "render/renderer.hpp"
-#include "sim/particles.hpp"
-#include "sim/scene.hpp"
+#include "sim/state/particles.hpp"
+#include "sim/setup/scene.hpp"
 
 namespace ejecta::app {
 

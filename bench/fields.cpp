@@ -37,7 +37,7 @@
 #include "fields/revolve.hpp"
 #include "fields/vdb_grids.hpp"
 #include "bench/arguments.hpp"
-#include "sim/run.hpp"
+#include "sim/run/run.hpp"
 
 using namespace ejecta;
 using namespace ejecta::fields;

@@ -20,9 +20,9 @@
 #include <vector>
 
 #include "bench/arguments.hpp"
-#include "sim/bodies.hpp"
-#include "sim/run.hpp"
-#include "sim/simulation.hpp"
+#include "sim/setup/bodies.hpp"
+#include "sim/run/run.hpp"
+#include "sim/run/simulation.hpp"
 
 using namespace ejecta;
 
@@ -73,7 +73,7 @@ Scene benchScene(const Options& o) {
   return scene;
 }
 
-// The same scene without solid mechanics (sim/materials.cpp: an absent table is no model). The
+// The same scene without solid mechanics (sim/solid/materials.cpp: an absent table is no model). The
 // rubble crust's initial damage goes too: without it no fracture arrays are allocated at all.
 Scene hydroOnly(Scene scene) {
   for (MaterialSpec& m : scene.materials) {

@@ -17,8 +17,8 @@
 
 #include "bench/arguments.hpp"
 #include "sim/exact/sedov.hpp"
-#include "sim/run.hpp"
-#include "sim/simulation.hpp"
+#include "sim/run/run.hpp"
+#include "sim/run/simulation.hpp"
 
 using namespace ejecta;
 

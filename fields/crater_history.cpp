@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "sim/atomic_file.hpp"
+#include "sim/io/atomic_file.hpp"
 
 namespace fs = std::filesystem;
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "fields/crater.hpp"
-#include "sim/scene.hpp"
+#include "sim/setup/scene.hpp"
 
 namespace ejecta::fields {
 

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "fields/revolve.hpp"
-#include "sim/particle_fields.hpp"
+#include "sim/state/particle_fields.hpp"
 
 namespace ejecta::fields {
 

@@ -8,13 +8,13 @@
 
 #include "fields/sparse_lattice.hpp"
 #include "fields/splat.hpp"
-#include "sim/geometry.hpp"
-#include "sim/particles.hpp"
-#include "sim/scene.hpp"
+#include "sim/state/geometry.hpp"
+#include "sim/state/particles.hpp"
+#include "sim/setup/scene.hpp"
 
 namespace ejecta::fields {
 
-// What to grid. Mirrors the scene's [fields] table (sim/scene.hpp: FieldsOutputOptions).
+// What to grid. Mirrors the scene's [fields] table (sim/setup/scene.hpp: FieldsOutputOptions).
 struct GridRequest {
   std::vector<std::string> grids{"density", "temperature", "pressure", "damage", "fractions"};
   double voxel = 0.0;            // [m]; 0 = the median smoothing length

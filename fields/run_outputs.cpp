@@ -10,7 +10,7 @@
 #include "fields/grid_set.hpp"
 #include "fields/measure_crater.hpp"
 #include "fields/vdb_grids.hpp"
-#include "sim/atomic_file.hpp"
+#include "sim/io/atomic_file.hpp"
 
 namespace fs = std::filesystem;
 

@@ -3,8 +3,8 @@
 // (RUN_DIR/fields/fields_NNNN.vdb, NNNN the snapshot index), and, for impact scenes, the crater
 // measured at every snapshot output (RUN_DIR/crater_history.csv, fields/crater_history.hpp) and
 // at the end (summary.json "crater_*" entries and RUN_DIR/crater_profile.csv).
-#include "sim/run.hpp"
-#include "sim/scene.hpp"
+#include "sim/run/run.hpp"
+#include "sim/setup/scene.hpp"
 
 namespace ejecta::fields {
 

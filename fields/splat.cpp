@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "sim/kernel.hpp"
+#include "sim/sph/kernel.hpp"
 
 namespace ejecta::fields {
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "fields/sparse_lattice.hpp"
-#include "sim/scene.hpp"
+#include "sim/setup/scene.hpp"
 
 namespace ejecta::fields {
 

@@ -12,7 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "sim/snapshot.hpp"
+#include "sim/io/snapshot.hpp"
 
 namespace fs = std::filesystem;
 

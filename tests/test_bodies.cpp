@@ -15,7 +15,7 @@
 
 #include "fields/crater.hpp"
 #include "fields/grid_set.hpp"
-#include "sim/bodies.hpp"
+#include "sim/setup/bodies.hpp"
 
 namespace ejecta {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "sim/boundaries.hpp"
+#include "sim/sph/boundaries.hpp"
 
 namespace ejecta {
 namespace {

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "render/png_io.hpp"
-#include "sim/scene.hpp"
+#include "sim/setup/scene.hpp"
 #include "support/command_line.hpp"
 
 namespace fs = std::filesystem;

@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "sim/exact/impedance_match.hpp"
-#include "sim/jwl.hpp"
-#include "sim/mie_gruneisen.hpp"
+#include "sim/eos/jwl.hpp"
+#include "sim/eos/mie_gruneisen.hpp"
 #include "support/command_line.hpp"
 
 namespace fs = std::filesystem;
@@ -124,7 +124,7 @@ TEST(UndexReference, SphericalChargeWritesTheGaugesAndColesValues) {
   EXPECT_NE(out.find("0.9993 kg"), std::string::npos) << out;  // (4/3) pi 0.0527^3 1630
   EXPECT_NE(out.find("Cole peak"), std::string::npos) << out;
   const Csv csv = readCsv(dir / "out" / "gauges_reference.csv");
-  // The SPH gauges.csv layout (sim/gauges.hpp), RZ: two velocity axes per gauge.
+  // The SPH gauges.csv layout (sim/sources/gauges.hpp), RZ: two velocity axes per gauge.
   const std::vector<std::string> expected = {"step",
                                              "time_s",
                                              "g100_pressure_Pa",

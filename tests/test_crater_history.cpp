@@ -15,8 +15,8 @@
 
 #include "fields/crater_history.hpp"
 #include "fields/run_outputs.hpp"
-#include "sim/run.hpp"
-#include "sim/scene.hpp"
+#include "sim/run/run.hpp"
+#include "sim/setup/scene.hpp"
 #include "tests/support/tiny_impact.hpp"
 
 namespace fs = std::filesystem;

@@ -16,8 +16,8 @@
 #include "fields/measure_crater.hpp"
 #include "fields/run_outputs.hpp"
 #include "fields/vdb_grids.hpp"
-#include "sim/run.hpp"
-#include "sim/scene.hpp"
+#include "sim/run/run.hpp"
+#include "sim/setup/scene.hpp"
 #include "tests/support/tiny_impact.hpp"
 
 namespace fs = std::filesystem;

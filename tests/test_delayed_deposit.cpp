@@ -14,12 +14,12 @@
 #include <unistd.h>
 #include <variant>
 
-#include "sim/bodies.hpp"
-#include "sim/energy_ledger.hpp"
+#include "sim/setup/bodies.hpp"
+#include "sim/run/energy_ledger.hpp"
 #include "sim/exact/sedov.hpp"
-#include "sim/materials.hpp"
-#include "sim/run.hpp"
-#include "sim/simulation.hpp"
+#include "sim/solid/materials.hpp"
+#include "sim/run/run.hpp"
+#include "sim/run/simulation.hpp"
 
 namespace fs = std::filesystem;
 

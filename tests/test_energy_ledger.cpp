@@ -12,10 +12,10 @@
 #include <sstream>
 #include <unistd.h>
 
-#include "sim/conservation.hpp"
-#include "sim/energy_ledger.hpp"
-#include "sim/run.hpp"
-#include "sim/snapshot.hpp"
+#include "sim/state/conservation.hpp"
+#include "sim/run/energy_ledger.hpp"
+#include "sim/run/run.hpp"
+#include "sim/io/snapshot.hpp"
 #include "tests/support/tiny_impact.hpp"
 
 namespace fs = std::filesystem;

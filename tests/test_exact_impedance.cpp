@@ -9,8 +9,8 @@
 
 #include "sim/exact/impedance_match.hpp"
 #include "sim/exact/taylor_wave.hpp"
-#include "sim/jwl.hpp"
-#include "sim/mie_gruneisen.hpp"
+#include "sim/eos/jwl.hpp"
+#include "sim/eos/mie_gruneisen.hpp"
 
 namespace ejecta::exact {
 namespace {

@@ -15,13 +15,13 @@
 #include <memory>
 #include <stdexcept>
 
-#include "sim/eos.hpp"
+#include "sim/eos/eos.hpp"
 #include "sim/exact/impedance_match.hpp"
 #include "sim/exact/radial_lagrangian.hpp"
 #include "sim/exact/sedov.hpp"
 #include "sim/exact/taylor_wave.hpp"
-#include "sim/jwl.hpp"
-#include "sim/mie_gruneisen.hpp"
+#include "sim/eos/jwl.hpp"
+#include "sim/eos/mie_gruneisen.hpp"
 
 namespace ejecta::exact {
 namespace {

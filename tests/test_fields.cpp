@@ -18,7 +18,7 @@
 #include "fields/grid_set.hpp"
 #include "fields/sparse_lattice.hpp"
 #include "fields/vdb_grids.hpp"
-#include "sim/scene.hpp"
+#include "sim/setup/scene.hpp"
 
 namespace fs = std::filesystem;
 

@@ -24,11 +24,11 @@
 #include <unordered_map>
 #include <vector>
 
-#include "sim/bodies.hpp"
-#include "sim/materials.hpp"
-#include "sim/run.hpp"
-#include "sim/scene.hpp"
-#include "sim/snapshot.hpp"
+#include "sim/setup/bodies.hpp"
+#include "sim/solid/materials.hpp"
+#include "sim/run/run.hpp"
+#include "sim/setup/scene.hpp"
+#include "sim/io/snapshot.hpp"
 
 namespace fs = std::filesystem;
 

@@ -12,7 +12,7 @@
 #include <unistd.h>
 #include <vector>
 
-#include "sim/gauge_decay.hpp"
+#include "sim/sources/gauge_decay.hpp"
 
 namespace fs = std::filesystem;
 
@@ -170,7 +170,7 @@ class GaugeCsv : public ::testing::Test {
 };
 
 TEST_F(GaugeCsv, ReadsTheGaugeFormatAndMeasuresIt) {
-  // The layout sim/gauges.cpp writes (RZ: two velocity components), a gauge not yet reached.
+  // The layout sim/sources/gauges.cpp writes (RZ: two velocity components), a gauge not yet reached.
   std::string text =
       "step,time_s,a_pressure_Pa,a_density_kg_m3,a_velocity_x_m_s,a_velocity_y_m_s,"
       "b_pressure_Pa,b_density_kg_m3,b_velocity_x_m_s,b_velocity_y_m_s\n";

@@ -10,11 +10,11 @@
 #include <unistd.h>
 #include <variant>
 
-#include "sim/bodies.hpp"
-#include "sim/gauges.hpp"
-#include "sim/materials.hpp"
-#include "sim/run.hpp"
-#include "sim/simulation.hpp"
+#include "sim/setup/bodies.hpp"
+#include "sim/sources/gauges.hpp"
+#include "sim/solid/materials.hpp"
+#include "sim/run/run.hpp"
+#include "sim/run/simulation.hpp"
 
 namespace fs = std::filesystem;
 
@@ -70,7 +70,7 @@ position = [5.0, 5.0]
     ParticleSet& q = sim.particles();
     std::fill(q.P.begin(), q.P.end(), 1e5);
     std::fill(q.rho.begin(), q.rho.end(), 1.2);
-    const std::vector<GaugeReading> r = readGauges(scene, q);
+    const std::vector<GaugeReading> r = readGauges(gaugeLayout(scene), q);
     ASSERT_EQ(r.size(), 3u);
     for (int g = 0; g < 2; ++g) {
       EXPECT_NEAR(r[g].pressure, 1e5, 1e-9 * 1e5);
@@ -91,7 +91,7 @@ TEST(Gauges, LinearFieldAtASymmetryPoint) {
   for (std::size_t i = 0; i < p.numReal; ++i) p.v[0][i] = 3.0 * p.x[0][i] + 2.0;
   Simulation sim(scene, std::move(p), std::move(materials), 1);
   sim.initialise();
-  EXPECT_NEAR(readGauges(scene, sim.particles())[0].velocity[0], 2.0, 1e-12);
+  EXPECT_NEAR(readGauges(gaugeLayout(scene), sim.particles())[0].velocity[0], 2.0, 1e-12);
 }
 
 TEST(Gauges, RunWritesTheCsvAndPeaksAndRejectsBadNames) {
@@ -134,7 +134,7 @@ position = [0.25, 0.0]
   EXPECT_NEAR(summaryPeak, peak, 1e-9 * peak);
   EXPECT_GT(peak, 1.2e5) << "the blast should have passed the gauge";
   EXPECT_GT(when, 0.0);
-  // The pulse (sim/gauge_decay.hpp, tested on exact pulses in test_gauge_decay): it arrives
+  // The pulse (sim/sources/gauge_decay.hpp, tested on exact pulses in test_gauge_decay): it arrives
   // (half its overpressure) before its peak, and falls to 1/e of it within the run.
   EXPECT_GT(arrival, 0.0);
   EXPECT_LE(arrival, when);

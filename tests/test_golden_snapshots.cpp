@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
-#include "sim/run.hpp"
-#include "sim/scene.hpp"
+#include "sim/run/run.hpp"
+#include "sim/setup/scene.hpp"
 #include "support/command_line.hpp"
 #include "support/periodic_blast.hpp"
 

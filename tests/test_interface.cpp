@@ -10,9 +10,9 @@
 #include <cmath>
 #include <string>
 
-#include "sim/bodies.hpp"
-#include "sim/mie_gruneisen.hpp"
-#include "sim/run.hpp"
+#include "sim/setup/bodies.hpp"
+#include "sim/eos/mie_gruneisen.hpp"
+#include "sim/run/run.hpp"
 
 namespace ejecta {
 namespace {

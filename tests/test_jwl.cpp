@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/jwl.hpp"
+#include "sim/eos/jwl.hpp"
 
 namespace ejecta {
 namespace {

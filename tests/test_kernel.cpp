@@ -5,8 +5,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "sim/axis_correction.hpp"
-#include "sim/kernel.hpp"
+#include "sim/sph/axis_correction.hpp"
+#include "sim/sph/kernel.hpp"
 
 namespace ejecta {
 namespace {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/mie_gruneisen.hpp"
+#include "sim/eos/mie_gruneisen.hpp"
 
 namespace ejecta {
 namespace {

@@ -6,8 +6,8 @@
 #include <random>
 #include <set>
 
-#include "sim/cell_grid.hpp"
-#include "sim/neighbour_lists.hpp"
+#include "sim/sph/cell_grid.hpp"
+#include "sim/sph/neighbour_lists.hpp"
 
 namespace ejecta {
 namespace {

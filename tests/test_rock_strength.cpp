@@ -8,13 +8,13 @@
 #include <string>
 #include <vector>
 
-#include "sim/bodies.hpp"
-#include "sim/materials.hpp"
-#include "sim/scene.hpp"
-#include "sim/simulation.hpp"
-#include "sim/solid_state.hpp"
-#include "sim/strength.hpp"
-#include "sim/tensor.hpp"
+#include "sim/setup/bodies.hpp"
+#include "sim/solid/materials.hpp"
+#include "sim/setup/scene.hpp"
+#include "sim/run/simulation.hpp"
+#include "sim/solid/solid_state.hpp"
+#include "sim/solid/strength.hpp"
+#include "sim/state/tensor.hpp"
 #include "support/material_scene_error.hpp"
 
 namespace ejecta {

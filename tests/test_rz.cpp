@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "sim/bodies.hpp"
-#include "sim/run.hpp"
+#include "sim/setup/bodies.hpp"
+#include "sim/run/run.hpp"
 
 namespace ejecta {
 namespace {

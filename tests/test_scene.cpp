@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "sim/materials.hpp"
-#include "sim/scene.hpp"
+#include "sim/solid/materials.hpp"
+#include "sim/setup/scene.hpp"
 
 namespace ejecta {
 namespace {

@@ -6,10 +6,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "sim/bodies.hpp"
-#include "sim/embedded_scenes.hpp"
-#include "sim/run.hpp"
-#include "sim/snapshot.hpp"
+#include "sim/setup/bodies.hpp"
+#include "sim/setup/embedded_scenes.hpp"
+#include "sim/run/run.hpp"
+#include "sim/io/snapshot.hpp"
 #include "support/periodic_blast.hpp"
 
 namespace fs = std::filesystem;

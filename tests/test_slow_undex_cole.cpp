@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <string>
 
-#include "sim/gauge_decay.hpp"
+#include "sim/sources/gauge_decay.hpp"
 #include "support/command_line.hpp"
 
 namespace fs = std::filesystem;

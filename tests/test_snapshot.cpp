@@ -17,10 +17,10 @@
 #include <string>
 #include <vector>
 
-#include "sim/atomic_file.hpp"
-#include "sim/snapshot.hpp"
-#include "sim/summary.hpp"
-#include "sim/xdmf.hpp"
+#include "sim/io/atomic_file.hpp"
+#include "sim/io/snapshot.hpp"
+#include "sim/run/summary.hpp"
+#include "sim/io/xdmf.hpp"
 
 namespace fs = std::filesystem;
 using namespace ejecta;

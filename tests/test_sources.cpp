@@ -12,13 +12,13 @@
 #include <unistd.h>
 #include <variant>
 
-#include "sim/bodies.hpp"
-#include "sim/energy_ledger.hpp"
-#include "sim/jwl.hpp"
-#include "sim/materials.hpp"
-#include "sim/programmed_burn.hpp"
-#include "sim/run.hpp"
-#include "sim/snapshot.hpp"
+#include "sim/setup/bodies.hpp"
+#include "sim/run/energy_ledger.hpp"
+#include "sim/eos/jwl.hpp"
+#include "sim/solid/materials.hpp"
+#include "sim/sources/programmed_burn.hpp"
+#include "sim/run/run.hpp"
+#include "sim/io/snapshot.hpp"
 
 namespace fs = std::filesystem;
 
@@ -162,7 +162,7 @@ TEST(ProgrammedBurn, CompressionAheadOfTheFrontBurnsByBeta) {
 TEST(ProgrammedBurn, TableTakesTheCjStateOfTheExplosive) {
   const Scene scene = parseScene(burstScene("jwl", 0.5), "burst.toml");
   const MaterialTable materials = MaterialTable::fromScene(scene);
-  const BurnTable t = burnTable(scene, materials);
+  const BurnTable t = burnTable(scene.detonations, materials);
   bool found = false;
   for (std::size_t m = 0; m < materials.size(); ++m) {
     if (t.velocity[m] <= 0.0) {
@@ -224,7 +224,7 @@ TEST(DirectEnergyDeposition, BodyDepositLandsTheYieldUniformlyInTheDevice) {
   const Scene scene = parseScene(burstScene("ded", 0.5), "ded.toml");
   ASSERT_EQ(scene.deposits.size(), 1u);
   EXPECT_EQ(scene.deposits[0].body, 0);
-  // "0.1 t" as an energy is a tenth of a ton of TNT: 4.184e8 J (sim/units.cpp).
+  // "0.1 t" as an energy is a tenth of a ton of TNT: 4.184e8 J (sim/setup/units.cpp).
   EXPECT_DOUBLE_EQ(scene.deposits[0].energy, 4.184e8);
   const MaterialTable materials = MaterialTable::fromScene(scene);
   const ParticleSet p = buildParticles(scene, materials);
@@ -319,7 +319,7 @@ TEST(ProgrammedBurn, SnapshotRestoresLightingTimesAndBurnFractions) {
   const MaterialTable materials = MaterialTable::fromScene(scene);
   ParticleSet p = buildParticles(scene, materials);
   p.P.assign(p.size(), 1e9);
-  applyProgrammedBurn(p, burnTable(scene, materials), scene.sph.eta, 2e-5);
+  applyProgrammedBurn(p, burnTable(scene.detonations, materials), scene.sph.eta, 2e-5);
   SnapshotInfo info;
   info.geometry = scene.geometry;
   info.sceneSource = burstScene("jwl", 0.5);

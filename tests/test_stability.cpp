@@ -10,11 +10,11 @@
 #include <map>
 #include <utility>
 
-#include "sim/bodies.hpp"
-#include "sim/materials.hpp"
-#include "sim/run.hpp"
-#include "sim/scene.hpp"
-#include "sim/simulation.hpp"
+#include "sim/setup/bodies.hpp"
+#include "sim/solid/materials.hpp"
+#include "sim/run/run.hpp"
+#include "sim/setup/scene.hpp"
+#include "sim/run/simulation.hpp"
 
 namespace ejecta {
 namespace {

@@ -9,15 +9,15 @@
 #include <string>
 #include <vector>
 
-#include "sim/bodies.hpp"
-#include "sim/fracture.hpp"
-#include "sim/run.hpp"
-#include "sim/simulation.hpp"
-#include "sim/snapshot.hpp"
-#include "sim/solid_state.hpp"
-#include "sim/strength.hpp"
-#include "sim/tensor.hpp"
-#include "sim/thermal.hpp"
+#include "sim/setup/bodies.hpp"
+#include "sim/solid/fracture.hpp"
+#include "sim/run/run.hpp"
+#include "sim/run/simulation.hpp"
+#include "sim/io/snapshot.hpp"
+#include "sim/solid/solid_state.hpp"
+#include "sim/solid/strength.hpp"
+#include "sim/state/tensor.hpp"
+#include "sim/solid/thermal.hpp"
 #include "support/material_scene_error.hpp"
 
 namespace fs = std::filesystem;

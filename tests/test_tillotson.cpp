@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/tillotson.hpp"
+#include "sim/eos/tillotson.hpp"
 
 namespace ejecta {
 namespace {

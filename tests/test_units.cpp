@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "sim/units.hpp"
+#include "sim/setup/units.hpp"
 
 namespace ejecta {
 namespace {

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/gauge_decay.hpp"
+#include "sim/sources/gauge_decay.hpp"
 #include "sim/verify/verification.hpp"
 #include "support/command_line.hpp"
 

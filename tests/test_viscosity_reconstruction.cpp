@@ -1,5 +1,5 @@
 // The reconstructed viscosity ([sph.viscosity] reconstruction = "van_leer" or "monotone",
-// sim/velocity_reconstruction.hpp): the corrected gradient is exact for linear fields, the
+// sim/sph/velocity_reconstruction.hpp): the corrected gradient is exact for linear fields, the
 // limiter's properties, no viscosity in a linear flow, Sod's tube against the exact Riemann
 // solution, the damping of a sound wave, conservation, mirror walls, threads and restarts.
 #include <gtest/gtest.h>
@@ -11,10 +11,10 @@
 #include <random>
 #include <vector>
 
-#include "sim/bodies.hpp"
-#include "sim/run.hpp"
-#include "sim/snapshot.hpp"
-#include "sim/velocity_reconstruction.hpp"
+#include "sim/setup/bodies.hpp"
+#include "sim/run/run.hpp"
+#include "sim/io/snapshot.hpp"
+#include "sim/sph/velocity_reconstruction.hpp"
 #include "support/periodic_blast.hpp"
 #include "support/viscosity_problems.hpp"
 

@@ -9,10 +9,10 @@
 #include <filesystem>
 #include <numbers>
 
-#include "sim/bodies.hpp"
+#include "sim/setup/bodies.hpp"
 #include "sim/exact/riemann.hpp"
-#include "sim/run.hpp"
-#include "sim/snapshot.hpp"
+#include "sim/run/run.hpp"
+#include "sim/io/snapshot.hpp"
 #include "sim/verify/runner.hpp"
 #include "support/periodic_blast.hpp"
 #include "support/viscosity_problems.hpp"

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/weibull_flaws.hpp"
+#include "sim/solid/weibull_flaws.hpp"
 
 namespace ejecta {
 namespace {

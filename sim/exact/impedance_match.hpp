@@ -21,8 +21,8 @@
 // bisection to round-off). docs/undex.md tabulates TNT into water: 14.5 GPa, 2.49 km/s.
 #include <vector>
 
-#include "sim/jwl.hpp"
-#include "sim/mie_gruneisen.hpp"
+#include "sim/eos/jwl.hpp"
+#include "sim/eos/mie_gruneisen.hpp"
 
 namespace ejecta::exact {
 

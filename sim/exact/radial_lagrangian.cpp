@@ -27,7 +27,7 @@ namespace ejecta::exact {
 
 namespace {
 
-// Ramp of the burn fraction in zone widths: LS-DYNA's 3/2, as sim/programmed_burn.cpp.
+// Ramp of the burn fraction in zone widths: LS-DYNA's 3/2, as sim/sources/programmed_burn.cpp.
 constexpr double kBurnWidthInZones = 1.5;
 // The time step may grow by at most this factor per step (the start, and after a burn lights).
 constexpr double kMaxStepGrowth = 1.2;
@@ -185,7 +185,7 @@ void RadialLagrangian::updateZones(std::size_t count, const std::vector<double>&
       if (f < 1.0) {
         const double width = burnWidth_[k];
         if (t > lightingTime_[k]) f = std::max(f, (t - lightingTime_[k]) * D / width);
-        // As in sim/programmed_burn.cpp: the compression burn only within one ramp width ahead
+        // As in sim/sources/programmed_burn.cpp: the compression burn only within one ramp width ahead
         // of the programmed front.
         if (compression && rho[k] > burn.rho0 && (lightingTime_[k] - t) * D < width)
           f = std::max(f, (1.0 - burn.rho0 / rho[k]) / (1.0 - burn.cjRelativeVolume));

@@ -20,7 +20,7 @@
 //     "Formulations of artificial viscosities for multi-dimensional shock wave computations",
 //     J. Comput. Phys. 144, 70, 1998, in one dimension; constants below);
 //   - zones of any ejecta::EquationOfState, grouped in regions (an explosive, then inert media);
-//   - the programmed burn of sim/programmed_burn.hpp: a zone is lit at t_L = t_0 + r/D (r its
+//   - the programmed burn of sim/sources/programmed_burn.hpp: a zone is lit at t_L = t_0 + r/D (r its
 //     initial centre's distance from r = 0), its burn fraction rises as (t - t_L) D / (1.5 dr),
 //     never below the compression burn (1 - rho0/rho)/(1 - V_CJ) within one ramp width ahead of
 //     the front, and the JWL pressure is multiplied by it; e0 is in the internal energy from t = 0;
@@ -32,11 +32,11 @@
 #include <string>
 #include <vector>
 
-#include "sim/eos.hpp"
+#include "sim/eos/eos.hpp"
 
 namespace ejecta::exact {
 
-// The programmed burn of one region (sim/programmed_burn.hpp; BurnTable gives these numbers).
+// The programmed burn of one region (sim/sources/programmed_burn.hpp; BurnTable gives these numbers).
 struct RadialBurn {
   double velocity = 0.0;          // detonation velocity D [m/s]; 0: not detonated (inert, F = 1)
   double rho0 = 0.0;              // unreacted density [kg/m^3]; 0: no compression burn

@@ -11,7 +11,7 @@
 // products' EOS, so the solution is exact up to a quadrature error far below any SPH error.
 #include <vector>
 
-#include "sim/jwl.hpp"
+#include "sim/eos/jwl.hpp"
 
 namespace ejecta::exact {
 

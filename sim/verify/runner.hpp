@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "sim/particles.hpp"
-#include "sim/scene.hpp"
-#include "sim/simulation.hpp"
+#include "sim/state/particles.hpp"
+#include "sim/setup/scene.hpp"
+#include "sim/run/simulation.hpp"
 #include "sim/verify/verification.hpp"
 
 namespace ejecta::verify::detail {

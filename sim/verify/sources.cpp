@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sim/eos_catalog.hpp"
+#include "sim/eos/eos_catalog.hpp"
 #include "sim/exact/taylor_wave.hpp"
-#include "sim/jwl.hpp"
+#include "sim/eos/jwl.hpp"
 #include "sim/verify/runner.hpp"
 
 namespace ejecta::verify::detail {

@@ -5,8 +5,8 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "sim/materials.hpp"
-#include "sim/mie_gruneisen.hpp"
+#include "sim/solid/materials.hpp"
+#include "sim/eos/mie_gruneisen.hpp"
 #include "sim/verify/runner.hpp"
 
 namespace ejecta::verify::detail {

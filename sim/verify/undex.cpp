@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "sim/exact/impedance_match.hpp"
-#include "sim/gauges.hpp"
-#include "sim/jwl.hpp"
-#include "sim/kernel.hpp"
-#include "sim/mie_gruneisen.hpp"
+#include "sim/sources/gauges.hpp"
+#include "sim/eos/jwl.hpp"
+#include "sim/sph/kernel.hpp"
+#include "sim/eos/mie_gruneisen.hpp"
 #include "sim/verify/runner.hpp"
 
 namespace ejecta::verify::detail {
@@ -39,7 +39,7 @@ struct GaugeHistory {
 
   void record(const Scene& scene, const ParticleSet& p, int explosive, double t) {
     time.push_back(t);
-    readings.push_back(readGauges(scene, p));
+    readings.push_back(readGauges(gaugeLayout(scene), p));
     std::vector<char> clean(scene.gauges.size(), 1);
     for (std::size_t g = 0; g < scene.gauges.size(); ++g)
       for (std::size_t i = 0; i < p.numReal; ++i)

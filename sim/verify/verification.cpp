@@ -7,15 +7,15 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "sim/atomic_file.hpp"
-#include "sim/embedded_scenes.hpp"
+#include "sim/io/atomic_file.hpp"
+#include "sim/setup/embedded_scenes.hpp"
 #include "sim/exact/radial_euler.hpp"
 #include "sim/exact/riemann.hpp"
 #include "sim/exact/sedov.hpp"
-#include "sim/mie_gruneisen.hpp"
-#include "sim/run.hpp"
-#include "sim/bodies.hpp"
-#include "sim/materials.hpp"
+#include "sim/eos/mie_gruneisen.hpp"
+#include "sim/run/run.hpp"
+#include "sim/setup/bodies.hpp"
+#include "sim/solid/materials.hpp"
 #include "sim/verify/runner.hpp"
 
 namespace ejecta::verify {

@@ -4,8 +4,8 @@
 // that check bad material keys are named (strength, fracture, rock strength).
 #include <string>
 
-#include "sim/materials.hpp"
-#include "sim/scene.hpp"
+#include "sim/solid/materials.hpp"
+#include "sim/setup/scene.hpp"
 
 namespace ejecta::test {
 

@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <string>
 
-#include "sim/run.hpp"
-#include "sim/scene.hpp"
+#include "sim/run/run.hpp"
+#include "sim/setup/scene.hpp"
 
 namespace ejecta::test {
 

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "sim/bodies.hpp"
+#include "sim/setup/bodies.hpp"
 #include "sim/exact/riemann.hpp"
-#include "sim/run.hpp"
+#include "sim/run/run.hpp"
 #include "sim/verify/runner.hpp"
 
 namespace ejecta::test {

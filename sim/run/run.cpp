@@ -1,0 +1,482 @@
+#include "sim/run/run.hpp"
+
+#include <omp.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <cstdlib>
+#include <limits>
+#include <regex>
+#include <algorithm>
+#include <sstream>
+
+#include "sim/io/atomic_file.hpp"
+#include "sim/setup/bodies.hpp"
+#include "sim/run/energy_ledger.hpp"
+#include "sim/sources/gauge_decay.hpp"
+#include "sim/sources/gauges.hpp"
+#include "sim/sph/kernel.hpp"
+#include "sim/io/snapshot.hpp"
+#include "sim/io/xdmf.hpp"
+
+namespace fs = std::filesystem;
+
+namespace ejecta {
+
+namespace {
+
+constexpr const char* kOverridePrefix = "# ejecta-override: ";
+// A delayed deposit the run has fired, with the ledger's state just before it: restart state
+// that travels in the stored scene text as a comment line, so a restart neither fires it again
+// nor loses the reference its share is measured from.
+constexpr const char* kFiringPrefix = "# ejecta-deposit-fired: ";
+
+std::string formatFiring(const DepositFiring& f) {
+  std::ostringstream out;
+  out.precision(17);
+  out << kFiringPrefix << f.deposit << ' ' << f.time << ' ' << f.step;
+  for (double c : f.point) out << ' ' << c;
+  out << ' ' << f.kineticBefore.size();
+  for (double e : f.kineticBefore) out << ' ' << e;
+  for (double e : f.internalBefore) out << ' ' << e;
+  return out.str();
+}
+
+DepositFiring parseFiring(const std::string& text) {
+  std::istringstream in(text);
+  DepositFiring f;
+  std::size_t materials = 0;
+  in >> f.deposit >> f.time >> f.step >> f.point[0] >> f.point[1] >> f.point[2] >> materials;
+  f.kineticBefore.resize(materials);
+  f.internalBefore.resize(materials);
+  for (double& e : f.kineticBefore) in >> e;
+  for (double& e : f.internalBefore) in >> e;
+  if (!in) throw SceneError("stored scene: malformed line '" + std::string(kFiringPrefix) + text + "'");
+  return f;
+}
+
+std::string snapshotName(long index) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "snap_%04ld.h5", index);
+  return buf;
+}
+
+// Scene text with the --set overrides recorded as comment lines, so a restart rebuilds the
+// same scene from the snapshot alone.
+std::string sourceWithOverrides(const RunOptions& o, const std::vector<DepositFiring>& firings = {}) {
+  std::string text;
+  for (const std::string& s : o.overrides) text += kOverridePrefix + s + "\n";
+  for (const DepositFiring& f : firings) text += formatFiring(f) + "\n";
+  return text + o.sceneSource;
+}
+
+// Inverse of sourceWithOverrides: the scene text and the override strings.
+void splitStoredScene(const std::string& stored, std::string& source,
+                      std::vector<std::string>& overrides,
+                      std::vector<DepositFiring>* firings = nullptr) {
+  source.clear();
+  overrides.clear();
+  std::istringstream in(stored);
+  std::string line;
+  const std::string prefix = kOverridePrefix, firingPrefix = kFiringPrefix;
+  while (std::getline(in, line)) {
+    if (line.rfind(prefix, 0) == 0) overrides.push_back(line.substr(prefix.size()));
+    else if (line.rfind(firingPrefix, 0) == 0) {
+      if (firings) firings->push_back(parseFiring(line.substr(firingPrefix.size())));
+    } else source += line + "\n";
+  }
+}
+
+std::string formatDuration(double seconds) {
+  char buf[32];
+  if (seconds < 60) std::snprintf(buf, sizeof buf, "%.0fs", seconds);
+  else if (seconds < 3600) std::snprintf(buf, sizeof buf, "%.0fm%02.0fs", std::floor(seconds / 60), std::fmod(seconds, 60));
+  else std::snprintf(buf, sizeof buf, "%.0fh%02.0fm", std::floor(seconds / 3600), std::fmod(seconds / 60, 60));
+  return buf;
+}
+
+// Output state of one run directory.
+class RunOutputs {
+ public:
+  explicit RunOutputs(const RunOptions& o) : options_(o) {
+    if (o.outDir.empty()) return;
+    fs::create_directories(fs::path(o.outDir) / "snapshots");
+  }
+  bool enabled() const { return !options_.outDir.empty(); }
+
+  // A restart resumes from a snapshot that the log has usually run past: keep the header and
+  // the rows up to `step`, so the resumed steps are not listed twice.
+  void truncateEnergyLog(long step) {
+    truncateLog("energy.csv", step);
+    truncateLog("gauges.csv", step);
+  }
+  void truncateLog(const char* name, long step) {
+    if (!enabled()) return;
+    const fs::path path = fs::path(options_.outDir) / name;
+    std::ifstream in(path);
+    if (!in) return;
+    std::string kept, line;
+    if (std::getline(in, line)) kept += line + "\n";
+    while (std::getline(in, line))
+      if (std::stol(line.substr(0, line.find(','))) <= step) kept += line + "\n";
+    in.close();
+    writeFileAtomically(path, kept);
+  }
+  // Scenes with several materials get the ledger's columns: <material>_kinetic_J and
+  // <material>_internal_J for each, after the totals.
+  void openEnergyLog(bool append, const Scene& scene) {
+    if (!enabled()) return;
+    materials_ = scene.materials.size() > 1 ? scene.materials.size() : 0;
+    // The target's gain as a share of the yield (a source) or of the impactor's kinetic energy.
+    const LedgerGroups g = ledgerGroups(scene);
+    coupling_ = materials_ > 0 && !g.target.empty() &&
+                (!g.impactor.empty() || !scene.detonations.empty() || !scene.deposits.empty());
+    const fs::path path = fs::path(options_.outDir) / "energy.csv";
+    energy_.open(path, append ? std::ios::app : std::ios::trunc);
+    if (!append) {
+      energy_ << "step,time_s,dt_s,kinetic_J,internal_J,total_J,relative_error,"
+                 "momentum_x,momentum_y,momentum_z";
+      for (std::size_t m = 0; m < materials_; ++m) {
+        const std::string key = ledgerKey(scene.materials[m].name);
+        energy_ << ',' << key << "_kinetic_J," << key << "_internal_J";
+      }
+      if (coupling_) energy_ << ",target_share";
+      energy_ << '\n';
+    }
+    energy_.precision(12);
+    if (!scene.gauges.empty()) {
+      gauges_.open(fs::path(options_.outDir) / "gauges.csv", append ? std::ios::app : std::ios::trunc);
+      if (!append) gauges_ << gaugeHeader(gaugeLayout(scene)) << '\n';
+      gauges_.precision(12);
+    }
+  }
+  void logGauges(const Simulation& sim) {
+    if (!gauges_.is_open()) return;
+    gauges_ << sim.stepCount() << ',' << sim.time()
+            << gaugeRow(gaugeLayout(sim.scene()), readGauges(gaugeLayout(sim.scene()), sim.particles())) << '\n';
+  }
+  void logEnergy(const Simulation& sim, double e0) {
+    if (!energy_.is_open()) return;
+    const ConservedTotals t = sim.totals();
+    // A delayed deposit is a source, not an error: the expected total includes what it added.
+    const double expected = e0 + sim.delayedEnergyAdded();
+    energy_ << sim.stepCount() << ',' << sim.time() << ',' << sim.lastDt() << ',' << t.kinetic
+            << ',' << t.internal << ',' << t.total() << ',' << (t.total() - expected) / std::abs(expected)
+            << ',' << t.momentum[0] << ',' << t.momentum[1] << ',' << t.momentum[2];
+    if (materials_ > 0) {
+      const std::vector<ConservedTotals> byMaterial = conservedTotalsByMaterial(sim.particles(), materials_);
+      for (const ConservedTotals& m : byMaterial) energy_ << ',' << m.kinetic << ',' << m.internal;
+      if (coupling_) energy_ << ',' << couplingShare(reference_, byMaterial);
+    }
+    energy_ << '\n';
+  }
+  void writeSnapshot(const Simulation& sim, SnapshotInfo info) {
+    if (!enabled()) return;
+    energy_.flush();
+    gauges_.flush();
+    const std::string name = snapshotName(info.snapshotIndex);
+    info.sceneSource = sourceWithOverrides(options_, sim.depositFirings());
+    ejecta::writeSnapshot((fs::path(options_.outDir) / "snapshots" / name).string(),
+                          sim.particles(), info);
+    xdmf_.push_back({"snapshots/" + name, info.time, sim.particles().numReal, info.geometry});
+    writeXdmfSeries((fs::path(options_.outDir) / "snapshots.xdmf").string(), xdmf_);
+  }
+  void setSeries(std::vector<XdmfEntry> entries) { xdmf_ = std::move(entries); }
+  // Each gauge's peak pressure and its time, from the whole of gauges.csv (a restarted run's
+  // too), into the summary.
+  // Each gauge's shock pulse (sim/sources/gauge_decay.hpp): the peak and its time, and, when the
+  // record holds the pulse, its arrival and Cole's decay constant theta (the 1/e time from the
+  // peak, and the log-linear fit over that e-fold). Overpressure is over the gauge's first
+  // reading, the ambient before anything arrives.
+  void addGaugePeaks(RunSummary& summary) {
+    if (!gauges_.is_open()) return;
+    gauges_.flush();
+    const GaugePressures history = readGaugePressures((fs::path(options_.outDir) / "gauges.csv").string());
+    for (std::size_t g = 0; g < history.names.size(); ++g) {
+      const std::vector<double>& p = history.pressure[g];
+      double ambient = std::numeric_limits<double>::quiet_NaN();
+      for (double v : p)
+        if (std::isfinite(v)) {
+          ambient = v;
+          break;
+        }
+      if (!std::isfinite(ambient)) continue;  // no particle ever reached the gauge
+      const std::string key = "gauge_" + history.names[g];
+      const auto peak = std::max_element(p.begin(), p.end(), [](double a, double b) {
+        return std::isnan(a) || (!std::isnan(b) && b > a);
+      });
+      summary.extras.push_back({key + "_peak_pressure_Pa", *peak});
+      summary.extras.push_back({key + "_peak_time_s", history.time[static_cast<std::size_t>(peak - p.begin())]});
+      if (history.time.size() < 2 || !(*peak > ambient)) continue;
+      try {
+        const ShockPulse pulse = measureShockPulse(history.time, p, ambient);
+        summary.extras.push_back({key + "_arrival_s", pulse.arrival});
+        if (std::isfinite(pulse.eFoldTime)) summary.extras.push_back({key + "_decay_time_s", pulse.eFoldTime});
+        if (std::isfinite(pulse.fitTime)) summary.extras.push_back({key + "_decay_fit_s", pulse.fitTime});
+      } catch (const std::invalid_argument& e) {  // e.g. a history whose times repeat
+        summary.extras.push_back({key + "_decay_note", std::string(e.what())});
+      }
+    }
+  }
+  void setCouplingReference(CouplingReference ref) { reference_ = std::move(ref); }
+
+ private:
+  const RunOptions& options_;
+  std::ofstream energy_;
+  std::ofstream gauges_;
+  std::size_t materials_ = 0;  // ledger columns in energy.csv (0: one material, totals only)
+  bool coupling_ = false;      // energy.csv has the target_share column
+  CouplingReference reference_;
+  std::vector<XdmfEntry> xdmf_;
+};
+
+class ProgressLine {
+ public:
+  explicit ProgressLine(bool on) : on_(on) {}
+  void update(const Simulation& sim, double wallSeconds, bool force = false) {
+    if (!on_) return;
+    if (!force && wallSeconds - last_ < 0.5) return;
+    last_ = wallSeconds;
+    const double tEnd = sim.scene().time.tEnd;
+    const double fraction = std::clamp(sim.time() / tEnd, 0.0, 1.0);
+    const double eta = fraction > 0 ? wallSeconds * (1 - fraction) / fraction : 0.0;
+    std::fprintf(stderr, "\r[ejecta] step %ld  t = %.4g s  dt = %.3g s  %5.1f%%  ETA %s    ",
+                 sim.stepCount(), sim.time(), sim.lastDt(), 100 * fraction,
+                 formatDuration(eta).c_str());
+    std::fflush(stderr);
+  }
+  void finish() {
+    if (on_) std::fprintf(stderr, "\n");
+  }
+
+ private:
+  bool on_;
+  double last_ = -1.0;
+};
+
+}  // namespace
+
+int resolveThreads(int requested) {
+  return requested > 0 ? requested : omp_get_max_threads();
+}
+
+namespace {
+
+bool reached(double time, double target) { return time >= target * (1.0 - 1e-12); }
+
+// The time loop shared by fresh and restarted runs. `info` holds the output cadence state.
+// `atSnapshot`: the current state is already on disk (a restart), so no final duplicate.
+// `fresh`: a new run: initialise the simulation and write snapshot 0 first.
+RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs,
+                 SnapshotInfo info, double wallBefore, bool atSnapshot, bool fresh) {
+  const Scene& scene = sim.scene();
+  const double tEnd = scene.time.tEnd;
+  const double interval = scene.output.snapshotInterval;
+  const bool snapshots = scene.output.snapshots;
+  const auto start = std::chrono::steady_clock::now();
+  auto wall = [&] {
+    return wallBefore +
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  ProgressLine progress(options.progress);
+  RunOutcome outcome;
+  bool lastWritten = atSnapshot;
+  auto snapshot = [&](bool final) {
+    info.time = sim.time();
+    info.step = sim.stepCount();
+    info.dtNext = sim.dtNext();
+    info.wallSeconds = wall();
+    if (snapshots) outputs.writeSnapshot(sim, info);
+    if (options.onOutput) options.onOutput(sim, info, final);
+    ++info.snapshotIndex;
+  };
+  if (!fresh)
+    outputs.setCouplingReference(couplingReference(scene, info.initialMaterialKinetic,
+                                                   info.initialMaterialInternal,
+                                                   sim.depositFirings()));
+  std::size_t firingsSeen = sim.depositFirings().size();
+  try {
+    if (fresh) {
+      // Derivatives of the initial state; snapshot 0 holds it with them.
+      sim.initialise();
+      const ConservedTotals t0 = sim.totals();
+      info.initialEnergy = t0.total();
+      info.initialMomentum = t0.momentum;
+      info.initialMaterialKinetic.clear();
+      info.initialMaterialInternal.clear();
+      for (const ConservedTotals& m :
+           conservedTotalsByMaterial(sim.particles(), scene.materials.size())) {
+        info.initialMaterialKinetic.push_back(m.kinetic);
+        info.initialMaterialInternal.push_back(m.internal);
+      }
+      outputs.setCouplingReference(couplingReference(scene, info.initialMaterialKinetic,
+                                                     info.initialMaterialInternal));
+      outputs.logEnergy(sim, info.initialEnergy);
+      outputs.logGauges(sim);
+      if (options.observer) options.observer(sim);
+      snapshot(false);
+    }
+    while (!reached(sim.time(), tEnd)) {
+      if (scene.time.maxSteps > 0 && sim.stepCount() >= scene.time.maxSteps)
+        throw SimulationError("reached time.max_steps = " + std::to_string(scene.time.maxSteps) +
+                              " at t = " + std::to_string(sim.time()) + " s before t_end");
+      const double limit = std::min(tEnd, info.nextOutputTime);
+      sim.step(limit);
+      lastWritten = false;
+      if (sim.depositFirings().size() != firingsSeen) {  // a delayed source fired: new reference
+        firingsSeen = sim.depositFirings().size();
+        outputs.setCouplingReference(couplingReference(scene, info.initialMaterialKinetic,
+                                                       info.initialMaterialInternal,
+                                                       sim.depositFirings()));
+      }
+      outputs.logEnergy(sim, info.initialEnergy);
+      outputs.logGauges(sim);
+      if (options.observer) options.observer(sim);
+      progress.update(sim, wall());
+      if (reached(sim.time(), info.nextOutputTime) && !reached(sim.time(), tEnd)) {
+        info.nextOutputTime = interval > 0 ? info.nextOutputTime + interval : tEnd;
+        snapshot(false);
+        lastWritten = true;
+      }
+    }
+    if (!lastWritten) {
+      info.nextOutputTime = tEnd;
+      snapshot(true);
+    }
+  } catch (const SimulationError& e) {
+    outcome.ok = false;
+    outcome.error = e.what();
+    try {
+      snapshot(true);  // the offending state, for diagnosis
+    } catch (const std::exception& w) {
+      outcome.error += std::string(" (and the last snapshot could not be written: ") + w.what() + ")";
+    }
+  }
+  progress.update(sim, wall(), true);
+  progress.finish();
+
+  const ConservedTotals t = sim.totals();
+  RunSummary& s = outcome.summary;
+  s.scene = scene.name;
+  s.particles = sim.particles().numReal;
+  s.steps = sim.stepCount();
+  s.tEnd = sim.time();
+  s.wallSeconds = wall();
+  s.threads = omp_get_max_threads();
+  s.energy.initial = info.initialEnergy;
+  s.energy.final = t.total();
+  const double expected = info.initialEnergy + sim.delayedEnergyAdded();
+  s.energy.relativeError = (t.total() - expected) / std::abs(expected);
+  s.momentum.initial = info.initialMomentum;
+  s.momentum.final = t.momentum;
+  s.status = outcome.ok ? RunSummary::Status::Completed : RunSummary::Status::Failed;
+  s.message = outcome.error;
+  s.extras.push_back({"geometry", std::string(geometryName(scene.geometry))});
+  s.extras.push_back({"kernel", std::string(kernelName(scene.sph.kernel))});
+  s.extras.push_back({"mean_neighbours", sim.meanNeighbours()});
+  s.extras.push_back({"particle_updates_per_second",
+                      s.wallSeconds > 0 ? static_cast<double>(s.particles) *
+                                              static_cast<double>(s.steps) / s.wallSeconds
+                                        : 0.0});
+  addEnergyPartition(scene, info.initialMaterialKinetic, info.initialMaterialInternal,
+                     conservedTotalsByMaterial(sim.particles(), scene.materials.size()), s,
+                     sim.depositFirings());
+  outputs.addGaugePeaks(s);
+  if (options.onFinish) options.onFinish(sim, s);
+  if (outputs.enabled())
+    writeSummaryJson((fs::path(options.outDir) / "summary.json").string(), s);
+  return outcome;
+}
+
+}  // namespace
+
+RunOutcome runSimulation(Simulation& sim, const RunOptions& options) {
+  RunOutputs outputs(options);
+  SnapshotInfo info;
+  info.geometry = sim.scene().geometry;
+  info.scene = sim.scene().name;
+  const double interval = sim.scene().output.snapshotInterval;
+  info.nextOutputTime = interval > 0 ? interval : sim.scene().time.tEnd;
+  outputs.openEnergyLog(false, sim.scene());
+  return drive(sim, options, outputs, info, 0.0, false, true);
+}
+
+RunOutcome runScene(const Scene& scene, const RunOptions& baseOptions) {
+  RunOptions options = baseOptions;
+  if (options.configure) options.configure(scene, options);
+  const int threads = resolveThreads(options.threads);
+  MaterialTable materials = MaterialTable::fromScene(scene);
+  ParticleSet particles = buildParticles(scene, materials);
+  Simulation sim(scene, std::move(particles), std::move(materials), threads);
+  return runSimulation(sim, options);
+}
+
+Scene storedScene(const SnapshotInfo& info, const std::string& snapshotPath) {
+  if (info.sceneSource.empty())
+    throw SceneError(snapshotPath + ": the snapshot holds no scene (/restart/scene_source is empty)");
+  std::string source;
+  std::vector<std::string> overrides;
+  splitStoredScene(info.sceneSource, source, overrides);
+  return parseScene(source, snapshotPath + " (stored scene)", overrides);
+}
+
+RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) {
+  const fs::path dir = fs::path(runDir) / "snapshots";
+  if (!fs::is_directory(dir))
+    throw std::runtime_error("restart: '" + runDir + "' has no snapshots/ directory");
+  std::vector<fs::path> files;
+  const std::regex pattern(R"(snap_(\d{4,})\.h5)");
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (std::regex_match(entry.path().filename().string(), pattern)) files.push_back(entry.path());
+  if (files.empty()) throw std::runtime_error("restart: no snap_NNNN.h5 in '" + dir.string() + "'");
+  // By snapshot index, not by name: snap_10000 comes after snap_9999.
+  auto index = [](const fs::path& f) { return std::stol(f.stem().string().substr(5)); };
+  std::sort(files.begin(), files.end(),
+            [&](const fs::path& a, const fs::path& b) { return index(a) < index(b); });
+
+  SnapshotInfo info;
+  ParticleSet particles = readSnapshot(files.back().string(), info);
+  RunOptions options = baseOptions;
+  options.outDir = runDir;
+  // The scene as the run was started: its text and --set overrides travel in the snapshot.
+  std::vector<DepositFiring> firings;
+  splitStoredScene(info.sceneSource, options.sceneSource, options.overrides, &firings);
+  const std::vector<std::string>& overrides = options.overrides;
+  Scene scene = parseScene(options.sceneSource, files.back().string() + " (stored scene)", overrides);
+  if (options.configure) options.configure(scene, options);
+
+  RunOutputs outputs(options);
+  std::vector<XdmfEntry> series;
+  for (const fs::path& f : files) {
+    SnapshotInfo earlier;
+    const ParticleSet q = f == files.back() ? ParticleSet{} : readSnapshot(f.string(), earlier);
+    const double time = f == files.back() ? info.time : earlier.time;
+    const std::size_t n = f == files.back() ? particles.numReal : q.numReal;
+    series.push_back({"snapshots/" + f.filename().string(), time, n, scene.geometry});
+  }
+  outputs.setSeries(series);
+  outputs.truncateEnergyLog(info.step);
+  outputs.openEnergyLog(true, scene);
+
+  const int threads = resolveThreads(options.threads);
+  MaterialTable materials = MaterialTable::fromScene(scene);
+  // Weibull flaws are drawn from the particles as built at t = 0: rebuild them for the draw.
+  const bool needsFlaws = [&] {
+    for (std::size_t m = 0; m < materials.size(); ++m)
+      if (materials[m].fracture.kind == FractureKind::GradyKipp) return true;
+    return false;
+  }();
+  const ParticleSet initial = needsFlaws ? buildParticles(scene, materials) : ParticleSet{};
+  Simulation sim(scene, std::move(particles), std::move(materials), threads);
+  if (needsFlaws) sim.distributeFlaws(initial);
+  sim.resume(info.time, info.step, info.dtNext);
+  sim.restoreDepositFirings(std::move(firings));
+  info.snapshotIndex += 1;
+  return drive(sim, options, outputs, info, info.wallSeconds, true, false);
+}
+
+}  // namespace ejecta

@@ -1,0 +1,55 @@
+#pragma once
+// Running a scene with its outputs: snapshots (HDF5) at the scene's cadence with one XDMF series,
+// the energy ledger of every step (energy.csv), summary.json, and a progress line on a terminal.
+// A failure of the numerics writes a last snapshot and a summary with status "failed".
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sim/setup/scene.hpp"
+#include "sim/run/simulation.hpp"
+#include "sim/io/snapshot.hpp"
+#include "sim/run/summary.hpp"
+
+namespace ejecta {
+
+struct RunOptions {
+  std::string outDir;                  // empty: no files written (verification in memory)
+  int threads = 0;                     // 0: OpenMP's default
+  bool progress = false;               // progress line on stderr
+  std::string sceneSource;             // TOML text the scene came from, stored for restarts
+  std::vector<std::string> overrides;  // --set strings, stored for restarts
+  // Called after every step (and once after initialisation) with the simulation.
+  std::function<void(const Simulation&)> observer;
+  // Called at every output time, after the snapshot (if any) is written, with its info; `final`
+  // is true for the run's last output (also after a failure). For in-situ outputs (fields/).
+  std::function<void(const Simulation&, const SnapshotInfo&, bool final)> onOutput;
+  // Called once at the end, before summary.json is written, to add to the summary.
+  std::function<void(const Simulation&, RunSummary&)> onFinish;
+  // Called by runScene and restartRun once the scene is known (a restart reads it from the
+  // snapshot), to add hooks for it: the command line adds the fields/ outputs here.
+  std::function<void(const Scene&, RunOptions&)> configure;
+};
+
+struct RunOutcome {
+  RunSummary summary;
+  bool ok = true;
+  std::string error;                   // the failure, when !ok
+};
+
+// Builds the particles from the scene, initialises and runs to t_end.
+RunOutcome runScene(const Scene& scene, const RunOptions& options);
+// Runs an already-built simulation to t_end (used by runScene and tests).
+RunOutcome runSimulation(Simulation& sim, const RunOptions& options);
+// Resumes the run in `runDir` from its last snapshot; continues writing there.
+RunOutcome restartRun(const std::string& runDir, const RunOptions& options);
+
+// The scene a snapshot was written from (its stored text and --set overrides). Throws
+// SceneError naming the snapshot when it holds no scene.
+Scene storedScene(const SnapshotInfo& info, const std::string& snapshotPath);
+
+// Resolves the thread count of RunOptions (0 -> OpenMP default).
+int resolveThreads(int requested);
+
+}  // namespace ejecta

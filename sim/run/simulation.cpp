@@ -1,0 +1,421 @@
+#include "sim/run/simulation.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
+#include <numeric>
+#include <sstream>
+
+#include "sim/setup/bodies.hpp"
+#include "sim/sph/density_pass.hpp"
+#include "sim/solid/fracture.hpp"
+#include "sim/sph/hydro_force.hpp"
+#include "sim/sources/programmed_burn.hpp"
+
+namespace ejecta {
+
+namespace {
+
+// Ghost layers and neighbour search reach this far beyond 2h, so the density pass may grow h by
+// this factor without a second ghost build (it checks, and rebuilds if h grew more).
+constexpr double kGhostMargin = 1.1;
+// Particles are reordered by cell every this many steps, for memory locality of the pair loops.
+constexpr long kSortInterval = 16;
+// Fewest particles worth a thread of their own (see the constructor).
+constexpr std::size_t kParticlesPerThread = 500;
+
+std::string describeParticle(const ParticleSet& p, std::size_t i) {
+  std::ostringstream s;
+  s.precision(6);
+  s << "particle id " << p.id[i] << " (material " << p.material[i] << ") at x=(" << p.x[0][i]
+    << ", " << p.x[1][i] << ", " << p.x[2][i] << ") m, v=(" << p.v[0][i] << ", " << p.v[1][i]
+    << ", " << p.v[2][i] << ") m/s, rho=" << p.rho[i] << " kg/m^3, u=" << p.u[i]
+    << " J/kg, P=" << p.P[i] << " Pa, h=" << p.h[i] << " m";
+  return s.str();
+}
+
+}  // namespace
+
+Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materials,
+                       int numThreads)
+    : scene_(std::move(scene)),
+      p_(std::move(particles)),
+      materials_(std::move(materials)),
+      boundaries_(scene_.geometry, scene_.domain),
+      ws_(scene_.sph, scene_.geometry) {
+  if (p_.numReal == 0) throw SimulationError("scene '" + scene_.name + "' has no particles");
+  // Below ~500 particles per thread the fork/join cost of a pass exceeds its work (a 450-particle
+  // tube runs faster on one thread); results do not depend on the thread count either way.
+  ws_.numThreads = std::clamp(static_cast<int>(p_.numReal / kParticlesPerThread), 1,
+                              std::max(numThreads, 1));
+  omp_set_num_threads(ws_.numThreads);
+  // A particle with 30x the neighbours its kernel should hold (the volume of the support in
+  // particle volumes: 2 kappa eta, pi (kappa eta)^2, 4/3 pi (kappa eta)^3) has an h that stopped
+  // tracking its density (the seed's dh/dt or constant h in a strong expansion); its pair loop
+  // would grow without bound, so the run stops with a diagnosis instead.
+  const double reach = kKernelSupport * scene_.sph.eta;
+  const double expected = ws_.dim == 1   ? 2.0 * reach
+                          : ws_.dim == 2 ? std::numbers::pi * reach * reach
+                                         : 4.0 / 3.0 * std::numbers::pi * reach * reach * reach;
+  maxNeighbours_ = static_cast<std::uint32_t>(std::max(30.0 * expected, 300.0));
+  // The collapse threshold comes from the scene (not the current h), so a restarted run checks
+  // exactly what the uninterrupted one checks.
+  double spacingMin = std::numeric_limits<double>::max();
+  for (const BodySpec& b : scene_.bodies) spacingMin = std::min(spacingMin, b.spacing);
+  if (scene_.bodies.empty())
+    for (std::size_t i = 0; i < p_.numReal; ++i) spacingMin = std::min(spacingMin, p_.h[i]);
+  hMin_ = scene_.sph.hMinFactor * scene_.sph.eta * spacingMin;
+  for (std::size_t i = 0; i < p_.numReal; ++i)
+    if (p_.material[i] < 0 || static_cast<std::size_t>(p_.material[i]) >= materials_.size())
+      throw SimulationError("particle id " + std::to_string(p_.id[i]) +
+                            " has material index " + std::to_string(p_.material[i]) +
+                            " but the scene defines " + std::to_string(materials_.size()));
+  // Solid state only where a material asks for it.
+  if (materials_.anyStrength()) {
+    if (p_.stressComponents() == 0) p_.enableStrength(stressComponentCount(ws_.dim));
+    ws_.shearModulus.assign(materials_.size(), 0.0);
+    ws_.yieldCarriesDamage.assign(materials_.size(), 0);
+    for (std::size_t m = 0; m < materials_.size(); ++m)
+      if (materials_[m].strength) {
+        ws_.shearModulus[m] = materials_[m].strength->shearModulus;
+        ws_.yieldCarriesDamage[m] = materials_[m].strength->yieldCarriesDamage() ? 1 : 0;
+      }
+    // Gray et al. (2001) use epsilon = 0.3 for elastic solids in tension.
+    ws_.artificialStress = scene_.sph.artificialStress < 0.0 ? 0.3 : scene_.sph.artificialStress;
+  }
+  if (materials_.anyFracture() && !p_.hasFracture()) p_.enableFracture();
+  burn_ = burnTable(scene_.detonations, materials_);
+  // A delayed body deposit finds its body's particles by id (they are reordered every few steps).
+  for (const EnergyDepositSpec& dep : scene_.deposits)
+    if (dep.time > 0.0 && dep.body >= 0 && bodyFirstIds_.empty())
+      bodyFirstIds_ = bodyFirstIds(scene_, materials_);
+  if (!scene_.detonations.empty() && !p_.hasBurn())
+    throw SimulationError("scene '" + scene_.name + "' detonates an explosive but the particles "
+                          "carry no lighting times (build them with buildParticles)");
+  initialiseViscosityAlpha(p_, scene_.sph);  // a restart keeps its snapshot's alpha
+}
+
+void Simulation::distributeFlaws(const ParticleSet& initial) {
+  flaws_ = distributeMaterialFlaws(initial, materials_);
+  flawsReady_ = true;
+}
+
+void Simulation::initialise() {
+  if (!flawsReady_) distributeFlaws(p_);
+  stateTime_ = time_;
+  if (scene_.sph.density == DensityMethod::Continuity &&
+      scene_.sph.smoothingLength == SmoothingLengthMethod::Neighbours)
+    setSmoothingFromDensity(p_, ws_);
+  evaluateDerivatives();
+
+  computeNextTimestep();
+  checkHealth(dtNext_);
+}
+
+void Simulation::resume(double time, long step, double dtNext) {
+  if (!flawsReady_) distributeFlaws(p_);
+  time_ = time;
+  stateTime_ = time;
+  step_ = step;
+  dtNext_ = dtNext;
+}
+
+double Simulation::meanNeighbours() const {
+  if (ws_.neighbourCount.empty()) return 0.0;
+  const double sum = std::accumulate(ws_.neighbourCount.begin(), ws_.neighbourCount.end(), 0.0);
+  return sum / static_cast<double>(ws_.neighbourCount.size());
+}
+
+void Simulation::sortForLocality() {
+  p_.clearGhosts();
+  double hMean = 0.0;
+  for (std::size_t i = 0; i < p_.numReal; ++i) hMean += p_.h[i];
+  hMean /= std::max<std::size_t>(p_.numReal, 1);
+  CellGrid grid;
+  grid.build(p_, ws_.dim, kKernelSupport * hMean);
+  const std::vector<std::uint64_t> keys = grid.cellKeys(p_, p_.numReal);
+  std::vector<std::size_t> order(p_.numReal);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
+  p_.permute(order);
+}
+
+void Simulation::evaluateEquationOfState() {
+  materialMembers_.assign(materials_.size(), {});
+  for (std::size_t i = 0; i < p_.numReal; ++i) materialMembers_[p_.material[i]].push_back(i);
+  for (std::size_t m = 0; m < materials_.size(); ++m) {
+    const std::vector<std::size_t>& members = materialMembers_[m];
+    materials_[m].eos->evaluate(p_.rho.data(), p_.u.data(), p_.P.data(), p_.cs.data(),
+                                members.data(), members.size());
+  }
+  applyProgrammedBurn(p_, burn_, scene_.sph.eta, stateTime_);
+  applyMaterialState(p_, materials_);
+}
+
+void Simulation::evaluateDerivatives() {
+  const int dim = ws_.dim;
+  double margin = kGhostMargin;
+  for (int attempt = 0;; ++attempt) {
+    boundaries_.makeGhosts(p_, kKernelSupport * margin);
+    // Cells about one (typical) kernel support across.
+    std::vector<double> hs(p_.h.begin(), p_.h.begin() + static_cast<std::ptrdiff_t>(p_.numReal));
+    std::nth_element(hs.begin(), hs.begin() + static_cast<std::ptrdiff_t>(hs.size() / 2), hs.end());
+    ws_.grid.build(p_, dim, kKernelSupport * hs[hs.size() / 2]);
+    ws_.lists.reset(p_.size(), std::max(ws_.numThreads, omp_get_max_threads()));
+    std::vector<double> hBefore(p_.h.begin(), p_.h.begin() + static_cast<std::ptrdiff_t>(p_.numReal));
+    if (const std::optional<std::size_t> bad = runDensityPass(p_, ws_))
+      failAt(*bad, "no positive density from the density pass (an isolated particle, or the "
+                   "continuity density of a particle driven to zero)");
+    if (boundaries_.layersCover(p_, kKernelSupport)) break;
+    if (attempt == 3)
+      failAt(0, "smoothing lengths near a boundary grew past four successively wider ghost "
+                "layers in one step");
+    // h grew past the ghost layer: rebuild from the starting h with a wider layer.
+    std::copy(hBefore.begin(), hBefore.end(), p_.h.begin());
+    margin *= 1.5;
+  }
+  evaluateEquationOfState();
+  boundaries_.refreshGhosts(p_);
+  if (scene_.sph.viscosityReconstruction != ViscosityReconstruction::None)
+    boundaries_.refreshGhostTensor(p_, ws_.velocityGradient);
+  if (ws_.geometry == Geometry::Axisymmetric) {
+    for (std::size_t g = p_.numReal; g < p_.size(); ++g) {
+      const std::size_t s = p_.ghostSource[g - p_.numReal];
+      ws_.smoothedR[g] = ws_.smoothedR[s];
+      ws_.dSmoothedR[g] = ws_.dSmoothedR[s];
+    }
+  }
+  switch (dim) {
+    case 1: ws_.lists.findGhostGathers<1>(p_, ws_.grid, kKernelSupport);
+            ws_.lists.buildPairs<1>(p_, kKernelSupport); break;
+    case 2: ws_.lists.findGhostGathers<2>(p_, ws_.grid, kKernelSupport);
+            ws_.lists.buildPairs<2>(p_, kKernelSupport); break;
+    default: ws_.lists.findGhostGathers<3>(p_, ws_.grid, kKernelSupport);
+             ws_.lists.buildPairs<3>(p_, kKernelSupport); break;
+  }
+  runForcePass(p_, ws_);
+  computeCrackGrowth(p_, materials_, flaws_, dim);
+}
+
+void Simulation::computeNextTimestep() {
+  const SphOptions& sph = scene_.sph;
+  double dtCourant = std::numeric_limits<double>::max();
+  double dtForce = std::numeric_limits<double>::max();
+  for (std::size_t i = 0; i < p_.numReal; ++i) {
+    const double h = p_.h[i], c = p_.cs[i], div = std::abs(p_.divv[i]);
+    // Seed eq. (1.8), with |div v| (the printed h div v can be negative) and the denominator
+    // floored at c so that alpha = 0 still respects the sound-crossing limit.
+    const double denom =
+        h * div + std::max(1.2 * (sph.alpha * c + sph.beta * h * div), c);
+    if (denom > 0.0) dtCourant = std::min(dtCourant, sph.courant * h / denom);
+    double a2 = 0.0;
+    for (int d = 0; d < 3; ++d) a2 += p_.a[d][i] * p_.a[d][i];
+    if (a2 > 0.0) dtForce = std::min(dtForce, sph.forceFactor * std::sqrt(h / std::sqrt(a2)));
+  }
+  // Crack growth: no Grady-Kipp crack fraction may grow by more than maxCrackIncrement in a
+  // step, so that the stress a cracking particle sheds reaches its neighbours while it cracks.
+  double dt = std::min({dtCourant, dtForce, crackGrowthTimestep(p_, materials_)});
+  if (scene_.time.dtMax > 0.0 && dt > scene_.time.dtMax) dt = scene_.time.dtMax;
+  if (dt == std::numeric_limits<double>::max()) dt = scene_.time.dtMax > 0 ? scene_.time.dtMax
+                                                                         : scene_.time.tEnd;
+  dtNext_ = dt;
+}
+
+void Simulation::failAt(std::size_t i, const std::string& reason) const {
+  std::ostringstream s;
+  s << "step " << step_ << ", t = " << time_ << " s: " << reason << ": "
+    << describeParticle(p_, i);
+  throw SimulationError(s.str());
+}
+
+void Simulation::checkHealth(double dt) const {
+  const double dtMin = scene_.time.dtMin > 0.0 ? scene_.time.dtMin : 1e-12 * scene_.time.tEnd;
+  for (std::size_t i = 0; i < p_.numReal; ++i) {
+    bool finite = std::isfinite(p_.rho[i]) && std::isfinite(p_.u[i]) && std::isfinite(p_.h[i]) &&
+                  std::isfinite(p_.P[i]) && std::isfinite(p_.du_dt[i]);
+    for (int d = 0; d < 3; ++d)
+      finite = finite && std::isfinite(p_.x[d][i]) && std::isfinite(p_.v[d][i]) &&
+               std::isfinite(p_.a[d][i]);
+    for (int c = 0; c < p_.stressComponents(); ++c)
+      finite = finite && std::isfinite(p_.stress[c][i]) && std::isfinite(p_.dstress_dt[c][i]);
+    if (!finite) failAt(i, "non-finite state (NaN or infinity)");
+    if (!(p_.rho[i] > 0.0)) failAt(i, "non-positive density");
+    if (p_.u[i] < 0.0 && materials_[static_cast<std::size_t>(p_.material[i])].eos->requiresPositiveEnergy())
+      failAt(i, "negative specific internal energy");
+    if (!(p_.omega[i] > 0.0)) failAt(i, "non-positive grad-h factor omega (h no longer solvable)");
+    if (p_.h[i] < hMin_)
+      failAt(i, "smoothing length collapsed below sph.h_min_factor x eta x the smallest body spacing");
+    if (i < ws_.neighbourCount.size() && ws_.neighbourCount[i] > maxNeighbours_)
+      failAt(i, "smoothing length grew until the particle has " +
+                    std::to_string(ws_.neighbourCount[i]) + " neighbours (limit " +
+                    std::to_string(maxNeighbours_) +
+                    "); h no longer follows the density (the seed's dh/dt or constant h in a "
+                    "strong expansion, or a particle rarefied at a contact under continuity "
+                    "density): use sph.smoothing_length = \"neighbours\" with summation density");
+  }
+  if (dt < dtMin) {
+    std::size_t worst = 0;
+    for (std::size_t i = 1; i < p_.numReal; ++i)
+      if (p_.cs[i] / p_.h[i] > p_.cs[worst] / p_.h[worst]) worst = i;
+    std::ostringstream s;
+    s << "time step " << dt << " s fell below dt_min " << dtMin << " s";
+    failAt(worst, s.str());
+  }
+}
+
+void Simulation::kickSolidState(double half, bool predict) {
+  const std::size_t n = p_.numReal;
+  const int nc = p_.stressComponents();
+  const bool fracture = p_.hasFracture();
+  if (predict) {
+    for (int c = 0; c < nc; ++c) stressHalf_[c].resize(n);
+    crackHalf_.resize(fracture ? n : 0);
+    strainHalf_.resize(nc > 0 ? n : 0);
+  }
+  if (nc == 0 && !fracture) return;
+  // Damage caps of the state this kick starts from, before its stress moves.
+  const std::vector<double> caps =
+      fracture ? crackCaps(p_, materials_, flaws_, ws_.dim) : std::vector<double>{};
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    // Predict: y_half = y + dt/2 y', y = y_half + dt/2 y'. Final: y = y_half + dt/2 y'_new.
+    for (int c = 0; c < nc; ++c) {
+      if (predict) stressHalf_[c][i] = p_.stress[c][i] + half * p_.dstress_dt[c][i];
+      p_.stress[c][i] = stressHalf_[c][i] + half * p_.dstress_dt[c][i];
+    }
+    if (nc > 0) {
+      if (predict) strainHalf_[i] = p_.totalStrain[i] + half * p_.strainRate[i];
+      p_.totalStrain[i] = strainHalf_[i] + half * p_.strainRate[i];
+    }
+    if (fracture) {  // bounded by the cap, which an explicit update could overshoot
+      if (predict) crackHalf_[i] = advanceCrack(p_.crack[i], p_.dcrack_dt[i], half, caps[i]);
+      p_.crack[i] = advanceCrack(crackHalf_[i], p_.dcrack_dt[i], half, caps[i]);
+    }
+  }
+}
+
+namespace {
+
+// A deposit is due once the time has reached its own, to rounding (steps are cut to land on it).
+bool depositDue(double time, double depositTime) { return time >= depositTime * (1.0 - 1e-12); }
+
+}  // namespace
+
+bool Simulation::fired(std::size_t deposit) const {
+  return std::any_of(firings_.begin(), firings_.end(),
+                     [&](const DepositFiring& f) { return f.deposit == deposit; });
+}
+
+double Simulation::nextDepositTime() const {
+  double next = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < scene_.deposits.size(); ++k)
+    if (scene_.deposits[k].time > 0.0 && !fired(k)) next = std::min(next, scene_.deposits[k].time);
+  return next;
+}
+
+double Simulation::delayedEnergyAdded() const {
+  double e = 0.0;
+  for (const DepositFiring& f : firings_) e += scene_.deposits[f.deposit].energy;
+  return e;
+}
+
+bool Simulation::fireDueDeposits() {
+  bool any = false;
+  for (std::size_t k = 0; k < scene_.deposits.size(); ++k) {
+    const EnergyDepositSpec& dep = scene_.deposits[k];
+    if (!(dep.time > 0.0) || fired(k) || !depositDue(time_, dep.time)) continue;
+    DepositFiring f;
+    f.deposit = k;
+    f.time = time_;
+    f.step = step_;
+    for (const ConservedTotals& m : conservedTotalsByMaterial(p_, materials_.size())) {
+      f.kineticBefore.push_back(m.kinetic);
+      f.internalBefore.push_back(m.internal);
+    }
+    f.point = applyDeposit(scene_, k, bodyFirstIds_, p_, time_);
+    firings_.push_back(std::move(f));
+    any = true;
+  }
+  return any;
+}
+
+void Simulation::step(double limit) {
+  if (step_ % kSortInterval == 0) sortForLocality();
+  // The deposit raises sound speeds by orders of magnitude: pressures, forces and the time step
+  // must come from the state with the energy, not from the step before it.
+  if (fireDueDeposits()) {
+    stateTime_ = time_;
+    evaluateDerivatives();
+    computeNextTimestep();
+    checkHealth(dtNext_);
+  }
+  limit = std::min(limit, nextDepositTime());
+  double dt = dtNext_;
+  if (time_ + dt > limit) dt = limit - time_;
+  const std::size_t n = p_.numReal;
+  const SphOptions& sph = scene_.sph;
+  const bool continuity = sph.density == DensityMethod::Continuity;
+  const bool seedH = sph.smoothingLength == SmoothingLengthMethod::Seed;
+  const int dim = ws_.dim;
+  for (int d = 0; d < 3; ++d) vHalf_[d].resize(n);
+  uHalf_.resize(n);
+  rhoHalf_.resize(continuity ? n : 0);
+  hHalf_.resize(seedH ? n : 0);
+  const double half = 0.5 * dt;
+
+  // Kick to the half step, drift positions, predict v and u (and rho, h) to the full step.
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int d = 0; d < dim; ++d) {
+      vHalf_[d][i] = p_.v[d][i] + half * p_.a[d][i];
+      p_.x[d][i] += dt * vHalf_[d][i];
+      p_.v[d][i] = vHalf_[d][i] + half * p_.a[d][i];
+    }
+    uHalf_[i] = p_.u[i] + half * p_.du_dt[i];
+    p_.u[i] = uHalf_[i] + half * p_.du_dt[i];
+    if (continuity) {
+      rhoHalf_[i] = p_.rho[i] + half * p_.drho_dt[i];
+      p_.rho[i] = rhoHalf_[i] + half * p_.drho_dt[i];
+    }
+    if (seedH) {
+      hHalf_[i] = p_.h[i] + half * p_.dh_dt[i];
+      p_.h[i] = hHalf_[i] + half * p_.dh_dt[i];
+    }
+  }
+  kickSolidState(half, true);
+  kickViscosityAlpha(p_, alphaHalf_, sph, half, true);
+  applyPlasticity(p_, materials_, false);
+  boundaries_.confine(p_, &vHalf_);
+  if (continuity && sph.smoothingLength == SmoothingLengthMethod::Neighbours)
+    setSmoothingFromDensity(p_, ws_);
+
+  stateTime_ = time_ + dt;
+  evaluateDerivatives();
+
+  // Second kick with the new derivatives.
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int d = 0; d < dim; ++d) p_.v[d][i] = vHalf_[d][i] + half * p_.a[d][i];
+    p_.u[i] = uHalf_[i] + half * p_.du_dt[i];
+    if (continuity) p_.rho[i] = rhoHalf_[i] + half * p_.drho_dt[i];
+    if (seedH) p_.h[i] = hHalf_[i] + half * p_.dh_dt[i];
+  }
+  kickSolidState(half, false);
+  kickViscosityAlpha(p_, alphaHalf_, sph, half, false);
+  // Pressure and sound speed of the final state, for the snapshot and the next time step.
+  evaluateEquationOfState();
+  applyPlasticity(p_, materials_, true);
+  lastFailures_ = applyFailure(p_, materials_);
+  time_ += dt;
+  ++step_;
+  lastDt_ = dt;
+  computeNextTimestep();
+  checkHealth(dtNext_);
+}
+
+}  // namespace ejecta

@@ -1,0 +1,128 @@
+#pragma once
+// Simulation: the particles, the materials and the physics terms a scene asks for, advanced in
+// time by kick-drift-kick leapfrog (the seed's eq. 1.9 in its synchronised form):
+//   v^(n+1/2) = v^n + a^n dt/2,  x^(n+1) = x^n + v^(n+1/2) dt,  v^(n+1) = v^(n+1/2) + a^(n+1) dt/2
+// and likewise for u (and rho with continuity density, h with the seed's dh/dt). Derivatives at
+// n+1 use velocities and energies predicted to n+1. Every step: neighbours -> density pass ->
+// equation of state -> force pass; then the time-step criteria and a health check.
+#include <array>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sim/sph/boundaries.hpp"
+#include "sim/state/conservation.hpp"
+#include "sim/sph/hydro_workspace.hpp"
+#include "sim/solid/materials.hpp"
+#include "sim/state/particles.hpp"
+#include "sim/sources/programmed_burn.hpp"
+#include "sim/setup/scene.hpp"
+#include "sim/solid/solid_state.hpp"
+
+namespace ejecta {
+
+// A bad numerical state: the message names the step, time, particle and its state.
+class SimulationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// A delayed energy deposit (EnergyDepositSpec::time > 0) that has fired: when, where, and the
+// energy ledger's reference just before it (the target's energy "just before the deposit").
+struct DepositFiring {
+  std::size_t deposit = 0;                 // index into Scene::deposits
+  double time = 0.0;                       // the start of the step it fired at [s]
+  long step = 0;                           // steps taken before it fired
+  std::array<double, 3> point{};           // centroid of the deposited energy [m]
+  std::vector<double> kineticBefore;       // per material, just before it [J]
+  std::vector<double> internalBefore;      // per material, just before it [J]
+};
+
+class Simulation {
+ public:
+  Simulation(Scene scene, ParticleSet particles, MaterialTable materials, int numThreads);
+
+  // Computes the derivatives of the current state and the next time step. Call once before the
+  // first step() of a new run; a restarted run instead calls resume() with stored values.
+  void initialise();
+  void resume(double time, long step, double dtNext);
+
+  // Grady-Kipp flaws are drawn from the particles as built at t = 0 (their volumes m/rho). A new
+  // run uses its own particles (initialise() does this); a restarted run must pass the scene's
+  // freshly built particles so it draws the same flaws.
+  void distributeFlaws(const ParticleSet& initial);
+  // Particles that failed (principal stress or erosion) in the last step.
+  std::size_t lastFailures() const { return lastFailures_; }
+
+  // Advances one step of min(next time step, limit - time, next delayed deposit - time). A
+  // delayed deposit due at the step's start (time >= its time) fires first: its energy is added,
+  // the derivatives and the time step are recomputed from the new state, and the step takes that
+  // time step. Throws SimulationError on a bad state (the particles then hold the offending
+  // state, for a last snapshot), SceneError for a delayed deposit whose region is empty.
+  void step(double limit);
+
+  // The delayed deposits fired so far, in order, and the energy they added [J].
+  const std::vector<DepositFiring>& depositFirings() const { return firings_; }
+  double delayedEnergyAdded() const;
+  // A restarted run: the deposits its snapshot had already fired (they do not fire again).
+  void restoreDepositFirings(std::vector<DepositFiring> firings) { firings_ = std::move(firings); }
+
+  double time() const { return time_; }
+  long stepCount() const { return step_; }
+  double dtNext() const { return dtNext_; }
+  double lastDt() const { return lastDt_; }
+  const Scene& scene() const { return scene_; }
+  const ParticleSet& particles() const { return p_; }
+  ParticleSet& particles() { return p_; }
+  const MaterialTable& materials() const { return materials_; }
+  ConservedTotals totals() const { return conservedTotals(p_); }
+  double meanNeighbours() const;
+
+ private:
+  void evaluateDerivatives();
+  void evaluateEquationOfState();
+  // Kick (and predict) the solid state: deviatoric stress, crack fraction, total strain.
+  void kickSolidState(double half, bool predict);
+  void computeNextTimestep();
+  void checkHealth(double dt) const;
+  // Throws SimulationError naming the step, time, `reason` and particle i's state.
+  [[noreturn]] void failAt(std::size_t i, const std::string& reason) const;
+  void sortForLocality();
+  // Fires the delayed deposits due at the current time; true when one fired.
+  bool fireDueDeposits();
+  // The earliest time of a delayed deposit not yet fired (infinity when none).
+  double nextDepositTime() const;
+  bool fired(std::size_t deposit) const;
+
+  Scene scene_;
+  ParticleSet p_;
+  MaterialTable materials_;
+  Boundaries boundaries_;
+  HydroWorkspace ws_;
+  double time_ = 0.0;
+  long step_ = 0;
+  double dtNext_ = 0.0;
+  double lastDt_ = 0.0;
+  double hMin_ = 0.0;
+  std::uint32_t maxNeighbours_ = 1u << 30;
+  std::vector<std::vector<std::size_t>> materialMembers_;
+  // Programmed burn: detonation velocity and C-J compression per material (velocity 0: not
+  // detonated), and the time of the state the equation of state is evaluated for (the
+  // predicted end of the step).
+  BurnTable burn_;
+  double stateTime_ = 0.0;
+  // Leapfrog half-step state.
+  Vec3Array vHalf_;
+  std::vector<double> uHalf_, rhoHalf_, hHalf_;
+  std::array<std::vector<double>, 6> stressHalf_;
+  std::vector<double> crackHalf_, strainHalf_;
+  std::vector<double> alphaHalf_;  // viscosity switch (sim/sph/hydro_force.hpp)
+  FlawSet flaws_;
+  bool flawsReady_ = false;
+  std::size_t lastFailures_ = 0;
+  std::vector<DepositFiring> firings_;
+  std::vector<std::int64_t> bodyFirstIds_;  // for delayed body deposits (bodyFirstIds)
+};
+
+}  // namespace ejecta

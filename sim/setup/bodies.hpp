@@ -1,0 +1,49 @@
+#pragma once
+// Initial particles: each body of the scene filled on its lattice, less the space of the voids
+// listed before it, then the energy deposits due at t = 0.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "sim/solid/materials.hpp"
+#include "sim/state/particles.hpp"
+#include "sim/setup/scene.hpp"
+
+namespace ejecta {
+
+// Generates the particles of every body (clipped to its shape and the domain; earlier bodies and
+// voids win where shapes overlap), sets mass, density, internal energy, velocity, h and material, then
+// adds the energy deposits with time 0 (the delayed ones are Simulation's to fire). Ids run
+// 0..n-1; numReal = n. Throws SceneError for a body without particles or a deposit that covers
+// none.
+ParticleSet buildParticles(const Scene& scene, const MaterialTable& materials);
+
+// The particle ids of each body as buildParticles assigns them: body b holds the ids
+// [first[b], first[b + 1]). Ids travel with the particles, so a body is found again after any
+// reordering (for a delayed body deposit).
+std::vector<std::int64_t> bodyFirstIds(const Scene& scene, const MaterialTable& materials);
+
+// Adds deposit `index` of the scene to the real particles now: sum_i m_i du_i = E exactly, over
+// the particles in its region (and of its body, by the ids of bodyFirstIds, if it names one) at
+// this moment. `time` is the time it fires, for the message. Returns the centroid of the energy
+// (the mass- and weight-averaged position), the burst's point. Throws SceneError naming the file,
+// key, scene, time and region when the region holds no particles.
+std::array<double, 3> applyDeposit(const Scene& scene, std::size_t index,
+                                   const std::vector<std::int64_t>& firstIdOfBody, ParticleSet& p,
+                                   double time);
+
+// Volume (area in 2D and RZ, length in 1D) of one lattice cell: cubic s^d, 2D hexagonal
+// s^2 sqrt(3)/2, 3D close packed (face-centred cubic, nearest neighbour s) s^3/sqrt(2).
+double latticeCellVolume(LatticeKind lattice, int dimension, double spacing);
+
+// Whether x lies in the shape (closed), using the first `dimension` coordinates.
+bool insideShape(const ShapeSpec& shape, const std::array<double, 3>& x, int dimension);
+
+// Whether x lies in a crater's bowl (closed): at a height s >= 0 above the floor along the axis
+// and within radius * sqrt(s / depth) of the axis.
+bool insideBowl(const BowlSpec& bowl, const std::array<double, 3>& x, int dimension);
+
+// Whether x lies in the space a void body claims (its bowl or its shape).
+bool insideVoid(const VoidSpec& v, const std::array<double, 3>& x, int dimension);
+
+}  // namespace ejecta

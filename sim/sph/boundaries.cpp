@@ -1,0 +1,159 @@
+#include "sim/sph/boundaries.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sim/state/tensor.hpp"
+
+namespace ejecta {
+
+
+Boundaries::Boundaries(Geometry geometry, const DomainBounds& domain)
+    : geometry_(geometry), dim_(spatialDimension(geometry)), domain_(domain) {
+  if (geometry_ == Geometry::Axisymmetric) {
+    // The axis is a mirror whatever the scene says about r's lower bound.
+    domain_[0].bounded = true;
+    domain_[0].min = 0.0;
+    domain_[0].lower = BoundaryKind::Wall;
+    if (domain_[0].max <= 0.0) domain_[0].upper = BoundaryKind::Open;
+  }
+  for (int d = 0; d < dim_; ++d) {
+    const AxisBounds& b = domain_[d];
+    if (!b.bounded) continue;
+    const double length = b.max - b.min;
+    if (b.lower != BoundaryKind::Open)
+      faces_.push_back({d, false, b.lower == BoundaryKind::Periodic, b.min, length});
+    if (b.upper != BoundaryKind::Open)
+      faces_.push_back({d, true, b.upper == BoundaryKind::Periodic, b.max, length});
+  }
+}
+
+void Boundaries::confine(ParticleSet& p, Vec3Array* alsoFlip) const {
+  for (int d = 0; d < dim_; ++d) {
+    const AxisBounds& b = domain_[d];
+    if (!b.bounded) continue;
+    const double length = b.max - b.min;
+    std::vector<double>& x = p.x[d];
+    std::vector<double>& v = p.v[d];
+    auto reflect = [&](std::size_t i, double wall) {
+      x[i] = 2.0 * wall - x[i];
+      v[i] = -v[i];
+      if (alsoFlip) (*alsoFlip)[d][i] = -(*alsoFlip)[d][i];
+    };
+    for (std::size_t i = 0; i < p.numReal; ++i) {
+      if (x[i] < b.min) {
+        if (b.lower == BoundaryKind::Periodic) x[i] += length;
+        else if (b.lower == BoundaryKind::Wall) reflect(i, b.min);
+      } else if (x[i] >= b.max) {
+        if (b.upper == BoundaryKind::Periodic) x[i] -= length;
+        else if (b.upper == BoundaryKind::Wall) reflect(i, b.max);
+      }
+    }
+  }
+}
+
+void Boundaries::makeGhosts(ParticleSet& p, double supportFactor) const {
+  p.clearGhosts();
+  flips_.clear();
+  layer_.assign(faces_.size(), 0.0);
+  for (std::size_t f = 0; f < faces_.size(); ++f) {
+    const Face& face = faces_[f];
+    const int d = face.axis;
+    auto distance = [&](std::size_t i) { return faceDistance(face, p.x[d][i]); };
+    // Layer: the widest support among particles whose support reaches the face the images land
+    // beside: this face for a mirror; for a periodic face both this one (an image's own support)
+    // and the partner face across the box (the real particles the images must serve). Includes
+    // ghosts made for earlier faces, which is what fills the corners.
+    const std::size_t n = p.size();
+    double layer = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (reachesLanding(face, p.x[d][i], supportFactor * p.h[i]))
+        layer = std::max(layer, supportFactor * p.h[i]);
+    layer_[f] = layer;
+    // Images of every particle inside the layer, appended in index order.
+    std::vector<std::size_t> images;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double dist = distance(i);
+      if (dist >= 0.0 && dist < layer) images.push_back(i);
+    }
+    const std::size_t first = p.size();
+    p.resize(first + images.size());
+    p.ghostSource.resize(p.numGhosts());
+    flips_.resize(p.numGhosts());
+#pragma omp parallel for schedule(static)
+    for (std::size_t k = 0; k < images.size(); ++k) {
+      const std::size_t i = images[k], g = first + k;
+      const std::size_t source = i < p.numReal ? i : p.ghostSource[i - p.numReal];
+      std::uint8_t flips = i < p.numReal ? 0 : flips_[i - p.numReal];
+      // Copy everything from particle i (itself possibly a ghost), then transform.
+      for (int c = 0; c < 3; ++c) { p.x[c][g] = p.x[c][i]; p.v[c][g] = p.v[c][i]; }
+      p.mass[g] = p.mass[i]; p.rho[g] = p.rho[i]; p.u[g] = p.u[i]; p.h[g] = p.h[i];
+      p.material[g] = p.material[i]; p.id[g] = p.id[i]; p.P[g] = p.P[i]; p.cs[g] = p.cs[i];
+      p.omega[g] = p.omega[i]; p.areaDensity[g] = p.areaDensity[i];
+      if (face.periodic) {
+        p.x[d][g] += face.upper ? -face.period : face.period;
+      } else {
+        p.x[d][g] = 2.0 * face.position - p.x[d][i];
+        p.v[d][g] = -p.v[d][i];
+        flips ^= static_cast<std::uint8_t>(1u << d);
+      }
+      p.ghostSource[g - p.numReal] = source;
+      flips_[g - p.numReal] = flips;
+    }
+  }
+}
+
+void Boundaries::refreshGhosts(ParticleSet& p) const {
+  const std::size_t nReal = p.numReal;
+  for (std::size_t g = 0; g < p.numGhosts(); ++g) {
+    const std::size_t i = nReal + g, s = p.ghostSource[g];
+    for (int k = 0; k < 3; ++k) p.v[k][i] = (flips_[g] >> k) & 1u ? -p.v[k][s] : p.v[k][s];
+    p.rho[i] = p.rho[s]; p.u[i] = p.u[s]; p.h[i] = p.h[s]; p.P[i] = p.P[s]; p.cs[i] = p.cs[s];
+    p.omega[i] = p.omega[s]; p.areaDensity[i] = p.areaDensity[s];
+    p.divv[i] = p.divv[s]; p.curlv[i] = p.curlv[s];
+    // A mirror reverses the shear components that pair a reflected axis with one that is not.
+    for (int c = 0; c < p.stressComponents(); ++c) {
+      const bool flip = (((flips_[g] >> kSymRow[c]) ^ (flips_[g] >> kSymCol[c])) & 1u) != 0;
+      p.stress[c][i] = flip ? -p.stress[c][s] : p.stress[c][s];
+    }
+    if (p.hasFracture()) p.crack[i] = p.crack[s];
+  }
+}
+
+void Boundaries::refreshGhostTensor(const ParticleSet& p, std::vector<double>& tensor) const {
+  for (std::size_t g = 0; g < p.numGhosts(); ++g) {
+    const double* source = &tensor[9 * p.ghostSource[g]];
+    double* ghost = &tensor[9 * (p.numReal + g)];
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) {
+        const bool flip = (((flips_[g] >> a) ^ (flips_[g] >> b)) & 1u) != 0;
+        ghost[3 * a + b] = flip ? -source[3 * a + b] : source[3 * a + b];
+      }
+  }
+}
+
+double Boundaries::faceDistance(const Face& face, double x) {
+  return face.upper ? face.position - x : x - face.position;
+}
+
+bool Boundaries::reachesLanding(const Face& face, double x, double reach) {
+  if (faceDistance(face, x) < reach) return true;
+  if (!face.periodic) return false;
+  // The partner face: images of particles near this face are shifted across to it.
+  const double partner = face.upper ? face.position - face.period : face.position + face.period;
+  const double toPartner = face.upper ? x - partner : partner - x;
+  return toPartner < reach;
+}
+
+bool Boundaries::layersCover(const ParticleSet& p, double supportFactor) const {
+  for (std::size_t f = 0; f < faces_.size(); ++f) {
+    const Face& face = faces_[f];
+    for (std::size_t i = 0; i < p.numReal; ++i) {
+      const double reach = supportFactor * p.h[i];
+      if (reach > layer_[f] && reachesLanding(face, p.x[face.axis][i], reach)) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace ejecta

@@ -1,0 +1,67 @@
+#pragma once
+// Domain boundaries: open, periodic and reflecting walls, and the RZ axis (a mirror at r = 0).
+// Walls and periodic faces act through ghost particles: mirror images (position reflected,
+// normal velocity reversed) or periodic images of the real particles near each face. Ghosts are
+// rebuilt every step after the drift and carry copies of their sources' state.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "sim/state/particles.hpp"
+#include "sim/state/domain.hpp"
+#include "sim/state/geometry.hpp"
+
+namespace ejecta {
+
+class Boundaries {
+ public:
+  Boundaries(Geometry geometry, const DomainBounds& domain);
+
+  // Brings real particles back inside: periodic wrap, and specular reflection of any particle
+  // that crossed a wall or the axis during the drift. `alsoFlip`, when given, is a second
+  // velocity array (the leapfrog's half-step velocity) reflected together with p.v.
+  void confine(ParticleSet& p, Vec3Array* alsoFlip = nullptr) const;
+
+  // Drops old ghosts and adds images of the real particles lying within the ghost layer of each
+  // wall and periodic face (and of earlier ghosts, so corners are covered). The layer of a face
+  // reaches `supportFactor * h` beyond the largest h found near it. Copies all primary and EOS
+  // state to the ghosts.
+  void makeGhosts(ParticleSet& p, double supportFactor) const;
+
+  // Recopies per-particle fields from sources to ghosts (after the density pass changed them).
+  void refreshGhosts(ParticleSet& p) const;
+
+  // Copies a full (not symmetric) 3 x 3 tensor per particle, stored row-major at 9 i, from
+  // sources to the ghosts of the last makeGhosts: a mirror reverses the components that pair a
+  // reflected axis with one that is not (a velocity gradient dv_a/dx_b changes sign with v_a and
+  // with x_b).
+  void refreshGhostTensor(const ParticleSet& p, std::vector<double>& tensor) const;
+
+  // True if every real particle's kernel support (supportFactor * h) near a face lies inside the
+  // ghost layer built by the last makeGhosts; false means makeGhosts must run again.
+  bool layersCover(const ParticleSet& p, double supportFactor) const;
+
+
+ private:
+  struct Face {
+    int axis;
+    bool upper;        // face at max (true) or min (false)
+    bool periodic;     // periodic image (shift) or mirror (reflection)
+    double position;   // coordinate of the face
+    double period;     // box length, periodic faces only
+  };
+  // Signed distance of coordinate x inside the face (positive inside the domain).
+  static double faceDistance(const Face& face, double x);
+  // True if a particle at x with support `reach` needs this face's images: it reaches the face
+  // (or, for a periodic face, the partner face where the images land).
+  static bool reachesLanding(const Face& face, double x, double reach);
+
+  Geometry geometry_;
+  int dim_;
+  DomainBounds domain_;
+  std::vector<Face> faces_;
+  mutable std::vector<double> layer_;      // layer width per face from the last makeGhosts
+  mutable std::vector<std::uint8_t> flips_; // per ghost: bit d set = velocity component d reversed
+};
+
+}  // namespace ejecta

@@ -1,0 +1,74 @@
+#include "sim/sph/cell_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ejecta {
+
+long CellGrid::cellCoord(double x, int d) const {
+  const long c = static_cast<long>(std::floor((x - origin_[d]) / cellSize_));
+  return std::clamp(c, 0L, cells_[d] - 1);
+}
+
+void CellGrid::build(const ParticleSet& p, int dim, double cellSize) {
+  dim_ = dim;
+  const std::size_t n = p.size();
+  std::array<double, 3> lo{0, 0, 0}, hi{0, 0, 0};
+  for (int d = 0; d < dim; ++d) {
+    lo[d] = std::numeric_limits<double>::max();
+    hi[d] = std::numeric_limits<double>::lowest();
+    for (std::size_t i = 0; i < n; ++i) {
+      lo[d] = std::min(lo[d], p.x[d][i]);
+      hi[d] = std::max(hi[d], p.x[d][i]);
+    }
+    if (n == 0) lo[d] = hi[d] = 0.0;
+  }
+  // Bound the cell count (a sparse cloud with one small-h cluster must not allocate a huge grid).
+  const double maxCells = 4.0 * static_cast<double>(std::max<std::size_t>(n, 64));
+  cellSize_ = std::max(cellSize, 1e-300);
+  for (;;) {
+    double total = 1.0;
+    for (int d = 0; d < dim; ++d) total *= std::floor((hi[d] - lo[d]) / cellSize_) + 1.0;
+    if (total <= maxCells) break;
+    cellSize_ *= 1.5;
+  }
+  for (int d = 0; d < 3; ++d) {
+    origin_[d] = lo[d];
+    cells_[d] = d < dim ? static_cast<long>(std::floor((hi[d] - lo[d]) / cellSize_)) + 1 : 1;
+  }
+  const std::size_t numCells = static_cast<std::size_t>(cells_[0] * cells_[1] * cells_[2]);
+
+  // Counting sort by cell; a stable order within each cell (by particle index).
+  std::vector<std::uint32_t> cellOf(n);
+  cellStart_.assign(numCells + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    long c = 0;
+    for (int d = dim - 1; d >= 0; --d) c = c * cells_[d] + cellCoord(p.x[d][i], d);
+    cellOf[i] = static_cast<std::uint32_t>(c);
+    ++cellStart_[c + 1];
+  }
+  for (std::size_t c = 0; c < numCells; ++c) cellStart_[c + 1] += cellStart_[c];
+  sorted_.resize(n);
+  std::vector<std::uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
+  for (std::size_t i = 0; i < n; ++i) sorted_[fill[cellOf[i]]++] = static_cast<std::uint32_t>(i);
+  for (int d = 0; d < 3; ++d) {
+    sortedPos_[d].resize(n);
+    if (d >= dim) { std::fill(sortedPos_[d].begin(), sortedPos_[d].end(), 0.0); continue; }
+    for (std::size_t k = 0; k < n; ++k) sortedPos_[d][k] = p.x[d][sorted_[k]];
+  }
+}
+
+std::vector<std::uint64_t> CellGrid::cellKeys(const ParticleSet& p, std::size_t count) const {
+  std::vector<std::uint64_t> keys(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    std::uint64_t c = 0;
+    for (int d = dim_ - 1; d >= 0; --d)
+      c = c * static_cast<std::uint64_t>(cells_[d]) +
+          static_cast<std::uint64_t>(cellCoord(p.x[d][i], d));
+    keys[i] = c;
+  }
+  return keys;
+}
+
+}  // namespace ejecta

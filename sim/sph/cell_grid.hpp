@@ -1,0 +1,69 @@
+#pragma once
+// CellGrid: a uniform grid of cells over the particles' bounding box, with the particles binned
+// by a counting sort (cell-linked list in compressed form). Rebuilt every step; queries return
+// every particle within a radius of a point, visiting cells in a fixed order so results are
+// deterministic.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "sim/state/particles.hpp"
+
+namespace ejecta {
+
+class CellGrid {
+ public:
+  // Bins particles [0, p.size()) in `dim` dimensions with cells of edge `cellSize` (enlarged if
+  // needed to keep the number of cells at most a few times the number of particles).
+  void build(const ParticleSet& p, int dim, double cellSize);
+
+  // Appends the indices of all particles j with |x_j - point|^2 < radius^2 to `out`.
+  template <int D>
+  void query(const ParticleSet& p, const double* point, double radius,
+             std::vector<std::uint32_t>& out) const;
+
+  // Cell index of each real particle under this grid; used to reorder particles for locality.
+  std::vector<std::uint64_t> cellKeys(const ParticleSet& p, std::size_t count) const;
+
+  double cellSize() const { return cellSize_; }
+
+ private:
+  int dim_ = 3;
+  double cellSize_ = 1.0;
+  std::array<double, 3> origin_{};
+  std::array<long, 3> cells_{1, 1, 1};
+  std::vector<std::uint32_t> cellStart_;  // size numCells + 1
+  std::vector<std::uint32_t> sorted_;     // particle indices ordered by cell
+  std::vector<double> sortedPos_[3];      // positions in cell order, for cache-friendly queries
+
+  long cellCoord(double x, int d) const;
+};
+
+template <int D>
+void CellGrid::query(const ParticleSet&, const double* point, double radius,
+                     std::vector<std::uint32_t>& out) const {
+  long lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  for (int d = 0; d < D; ++d) {
+    lo[d] = cellCoord(point[d] - radius, d);
+    hi[d] = cellCoord(point[d] + radius, d);
+  }
+  const double r2 = radius * radius;
+  for (long cz = lo[2]; cz <= hi[2]; ++cz) {
+    for (long cy = lo[1]; cy <= hi[1]; ++cy) {
+      const long rowBase = (cz * cells_[1] + cy) * cells_[0];
+      const std::uint32_t begin = cellStart_[rowBase + lo[0]];
+      const std::uint32_t end = cellStart_[rowBase + hi[0] + 1];
+      // A row of cells is contiguous in the sorted order: one sweep.
+      for (std::uint32_t k = begin; k < end; ++k) {
+        double d2 = 0.0;
+        for (int d = 0; d < D; ++d) {
+          const double dx = sortedPos_[d][k] - point[d];
+          d2 += dx * dx;
+        }
+        if (d2 < r2) out.push_back(sorted_[k]);
+      }
+    }
+  }
+}
+
+}  // namespace ejecta

@@ -1,0 +1,262 @@
+#include "sim/sph/density_pass.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "sim/sph/velocity_reconstruction.hpp"
+
+namespace ejecta {
+
+namespace {
+
+constexpr double kSearchMargin = 1.08;   // candidates fetched out to 1.08 x the support
+constexpr double kNewtonTolerance = 1e-7;
+constexpr int kNewtonMaxIterations = 60;
+constexpr double kMaxGrowthPerStep = 2.0;  // h may change by at most this factor in one pass
+
+template <int D>
+double powD(double x) {
+  if constexpr (D == 1) return x;
+  else if constexpr (D == 2) return x * x;
+  else return x * x * x;
+}
+
+// Sum of m_j W and m_j dW/dh over the candidates within the support of h.
+template <template <int> class K, int D>
+void kernelSums(const ParticleSet& p, const std::vector<std::uint32_t>& cand,
+                const std::vector<double>& dist2, double h, double& S, double& dS) {
+  S = 0.0;
+  dS = 0.0;
+  const double reach = kKernelSupport * h;
+  const double reach2 = reach * reach;
+  const double hInv = 1.0 / h;
+  const double hInvD = powD<D>(hInv);
+  for (std::size_t k = 0; k < cand.size(); ++k) {
+    if (dist2[k] >= reach2) continue;
+    const double r = std::sqrt(dist2[k]);
+    const double m = p.mass[cand[k]];
+    double w, dw;
+    K<D>::shape(r * hInv, w, dw);
+    S += m * w;
+    dS -= m * (D * w + r * hInv * dw);
+  }
+  // W = sigma/h^D w(q), dW/dh = -sigma/h^(D+1) (D w + q w').
+  const double norm = K<D>::sigma * hInvD;
+  S *= norm;
+  dS *= norm * hInv;
+}
+
+template <template <int> class K, int D, bool RZ>
+std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
+  const SphOptions& sph = ws.sph;
+  const bool summation = sph.density == DensityMethod::Summation;
+  const bool tiedH = summation && sph.smoothingLength == SmoothingLengthMethod::Neighbours;
+  const std::size_t nReal = p.numReal;
+  const double etaD = powD<D>(sph.eta);
+  const bool gradient = sph.viscosityReconstruction != ViscosityReconstruction::None;
+  const bool monotone = sph.viscosityReconstruction == ViscosityReconstruction::Monotone;
+  std::size_t failedIndex = nReal;  // lowest failing index (a min reduction: schedule-proof)
+
+#pragma omp parallel reduction(min : failedIndex)
+  {
+    const int t = omp_get_thread_num();
+    std::vector<std::uint32_t> cand, list;
+    std::vector<double> offsets;
+    std::vector<double> dist2;  // squared distances: membership tests use r^2 < (2h)^2, as
+                                // the neighbour lists do, so both agree at the support edge
+    // Dynamic chunks balance the uneven cost (large-h particles, Newton iterations); each
+    // particle is computed by one thread alone, so results do not depend on the schedule.
+#pragma omp for schedule(dynamic, 256)
+    for (std::size_t i = 0; i < nReal; ++i) {
+      const double xi[3] = {p.x[0][i], p.x[1][i], p.x[2][i]};
+      const double mi = p.mass[i];
+      const double hStart = p.h[i];
+      double h = hStart;
+      double radius = 0.0;
+      auto fetch = [&](double needed) {
+        radius = needed * kSearchMargin;
+        cand.clear();
+        ws.grid.query<D>(p, xi, radius, cand);
+        dist2.resize(cand.size());
+        for (std::size_t k = 0; k < cand.size(); ++k) {
+          double r2 = 0.0;
+          for (int d = 0; d < D; ++d) {
+            const double dx = xi[d] - p.x[d][cand[k]];
+            r2 += dx * dx;
+          }
+          dist2[k] = r2;
+        }
+      };
+      fetch(kKernelSupport * h);
+
+      if (tiedH) {
+        // Newton iteration on f(h) = S(h) - m (eta/h)^D.
+        for (int it = 0; it < kNewtonMaxIterations; ++it) {
+          double S, dS;
+          kernelSums<K, D>(p, cand, dist2, h, S, dS);
+          const double target = mi * etaD / powD<D>(h);
+          const double f = S - target;
+          const double fp = dS + D * target / h;
+          double hNew = (fp > 0.0 && std::isfinite(fp)) ? h - f / fp : h * (f > 0 ? 0.8 : 1.25);
+          hNew = std::clamp(hNew, std::max(0.5 * h, hStart / kMaxGrowthPerStep),
+                            std::min(2.0 * h, hStart * kMaxGrowthPerStep));
+          const bool converged = std::abs(hNew - h) < kNewtonTolerance * h;
+          h = hNew;
+          if (kKernelSupport * h > radius) fetch(kKernelSupport * h);
+          if (converged) break;
+        }
+      }
+
+      // Final sums at h: density, grad-h term, gather list, divergence, curl, continuity rate.
+      const double reach = kKernelSupport * h;
+      const double reach2 = reach * reach;
+      const double hInv = 1.0 / h;
+      double S = 0.0, dS = 0.0, vdotgrad = 0.0;
+      double curl[3] = {0.0, 0.0, 0.0};
+      double gradSum[3][3] = {}, shapeSum[3][3] = {};  // A and M of correctedGradient
+      double vLow[3], vHigh[3];  // range of each velocity component over the gather list
+      offsets.clear();           // x_i - x_j of the gather list, for the range limiter
+      for (int a = 0; a < D; ++a) vLow[a] = vHigh[a] = p.v[a][i];
+      list.clear();
+      for (std::size_t k = 0; k < cand.size(); ++k) {
+        if (dist2[k] >= reach2) continue;
+        const double r = std::sqrt(dist2[k]);
+        const std::uint32_t j = cand[k];
+        list.push_back(j);
+        const double m = p.mass[j];
+        double w, dw;
+        K<D>::shape(r * hInv, w, dw);
+        S += m * w;
+        dS -= m * (D * w + r * hInv * dw);
+        if (r == 0.0) continue;
+        const double f = m * dw / r;  // grad W = x_ij f sigma / (m h^(D+1)), scaled below
+        double dx[3] = {0.0, 0.0, 0.0}, dv[3] = {0.0, 0.0, 0.0};
+        for (int d = 0; d < D; ++d) {
+          dx[d] = xi[d] - p.x[d][j];
+          dv[d] = p.v[d][i] - p.v[d][j];
+          vdotgrad += dv[d] * dx[d] * f;
+        }
+        if (gradient)
+          for (int a = 0; a < D; ++a) {
+            for (int b = 0; b < D; ++b) gradSum[a][b] += dv[a] * dx[b] * f;
+            for (int b = a; b < D; ++b) shapeSum[a][b] += dx[a] * dx[b] * f;  // symmetric
+            if (monotone) {
+              vLow[a] = std::min(vLow[a], p.v[a][j]);
+              vHigh[a] = std::max(vHigh[a], p.v[a][j]);
+              offsets.push_back(dx[a]);
+            }
+          }
+        if constexpr (D == 2) {
+          curl[2] += (dv[0] * dx[1] - dv[1] * dx[0]) * f;
+        } else if constexpr (D == 3) {
+          curl[0] += (dv[1] * dx[2] - dv[2] * dx[1]) * f;
+          curl[1] += (dv[2] * dx[0] - dv[0] * dx[2]) * f;
+          curl[2] += (dv[0] * dx[1] - dv[1] * dx[0]) * f;
+        }
+      }
+      {
+        // Kernel normalisation applied once: W = sigma/h^D w, dW/dr = sigma/h^(D+1) w',
+        // dW/dh = -sigma/h^(D+1) (D w + q w').
+        const double norm = K<D>::sigma * powD<D>(hInv);
+        S *= norm;
+        dS *= norm * hInv;
+        vdotgrad *= norm * hInv;
+        for (double& c : curl) c *= norm * hInv;
+      }
+      if (gradient) {
+        for (int a = 0; a < D; ++a)
+          for (int b = 0; b < a; ++b) shapeSum[a][b] = shapeSum[b][a];
+        double G[3][3];
+        correctedGradient<D>(gradSum, shapeSum, G);  // G = 0 where it cannot be inverted
+        if (monotone) {
+          const double vi[3] = {p.v[0][i], p.v[1][i], p.v[2][i]};
+          limitToNeighbourRange<D>(G, vi, vLow, vHigh, offsets.data(), offsets.size() / D);
+        }
+        double* out = &ws.velocityGradient[9 * i];
+        for (int a = 0; a < D; ++a)
+          for (int b = 0; b < D; ++b) out[3 * a + b] = G[a][b];
+      }
+      ws.lists.storeGather(t, i, list.data(), list.size());
+      ws.neighbourCount[i] = static_cast<std::uint32_t>(list.size());
+      p.h[i] = h;
+
+      double rt = 1.0, drt = 0.0;
+      if constexpr (RZ) ws.axis->smoothedRadius(xi[0], h, rt, drt);
+      // The density-like quantity of the kernel sums: rho (1D, 2D, 3D) or eta = 2 pi rt rho (RZ).
+      double sigma;
+      if (summation) {
+        sigma = S;
+        p.rho[i] = RZ ? S / (2.0 * std::numbers::pi * rt) : S;
+      } else {
+        sigma = RZ ? 2.0 * std::numbers::pi * rt * p.rho[i] : p.rho[i];
+      }
+      if (!(sigma > 0.0)) {
+        failedIndex = std::min(failedIndex, i);
+        continue;
+      }
+      double omega = tiedH ? 1.0 + h / (D * sigma) * dS : 1.0;
+      if constexpr (RZ) {
+        // rho = eta / (2 pi rt(h)) also depends on h through rt: with h tied to eta the
+        // Lagrangian's d rho carries f = 1 + (rt - r rt') / (2 rt) (1.5 on the axis, 1 beyond
+        // 2h), folded into omega.
+        if (tiedH) omega /= 1.0 + (rt - xi[0] * drt) / (2.0 * rt);
+      }
+      p.omega[i] = omega;
+      if constexpr (RZ) {
+        p.areaDensity[i] = sigma;
+        ws.smoothedR[i] = rt;
+        ws.dSmoothedR[i] = drt;
+      }
+      const double hoopRate = RZ ? p.v[0][i] * drt / rt : 0.0;  // v_r / r term of div v
+      p.divv[i] = -vdotgrad / (omega * sigma) + hoopRate;
+      p.curlv[i] = std::sqrt(curl[0] * curl[0] + curl[1] * curl[1] + curl[2] * curl[2]) /
+                   (omega * sigma);
+      // Continuity rate, also what drives the seed's dh/dt.
+      const double drho = p.rho[i] / sigma * vdotgrad - p.rho[i] * hoopRate;
+      p.drho_dt[i] = drho;
+      p.dh_dt[i] = sph.smoothingLength == SmoothingLengthMethod::Seed
+                       ? -sph.relaxation * h / (p.rho[i] * D) * drho
+                       : 0.0;
+    }
+  }
+  return failedIndex < nReal ? std::optional<std::size_t>(failedIndex) : std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::size_t> runDensityPass(ParticleSet& p, HydroWorkspace& ws) {
+  ws.neighbourCount.resize(p.numReal);
+  if (ws.sph.viscosityReconstruction != ViscosityReconstruction::None)
+    ws.velocityGradient.assign(9 * p.size(), 0.0);  // components beyond D stay 0
+  if (ws.geometry == Geometry::Axisymmetric) {
+    ws.smoothedR.resize(p.size());
+    ws.dSmoothedR.resize(p.size());
+  }
+  return dispatchHydro(ws, [&]<template <int> class K, int D, bool RZ>() {
+    return densityPassImpl<K, D, RZ>(p, ws);
+  });
+}
+
+void setSmoothingFromDensity(ParticleSet& p, const HydroWorkspace& ws) {
+  const int D = ws.dim;
+  const bool rz = ws.geometry == Geometry::Axisymmetric;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.numReal; ++i) {
+    // RZ: the 2D area per particle is m / (2 pi rt rho), rt the smoothed radius at the current h
+    // (finite on the axis), as in the density pass.
+    double perVolume = p.rho[i];
+    if (rz) {
+      double rt, drt;
+      ws.axis->smoothedRadius(p.x[0][i], p.h[i], rt, drt);
+      perVolume = 2.0 * std::numbers::pi * rt * p.rho[i];
+    }
+    p.h[i] = ws.sph.eta * std::pow(p.mass[i] / perVolume, 1.0 / D);
+  }
+}
+
+}  // namespace ejecta

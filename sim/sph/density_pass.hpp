@@ -1,0 +1,29 @@
+#pragma once
+// The density pass: for every real particle, its gather list, the kernel-summed density (or the
+// continuity rate), the smoothing length when tied to the density, the grad-h factor omega, and
+// the velocity divergence and curl.
+//
+// Summation:   rho_i = sum_j m_j W(x_ij, h_i)                     (planar, 1D, 3D)
+//              eta_i = sum_j m_j W(x_ij, h_i), rho_i = eta_i / (2 pi rt_i)   (RZ, ring masses)
+// Continuity:  d rho_i / dt = sum_j m_j v_ij . grad_i W_ij            (the seed's eq. 1.1)
+// Smoothing length "neighbours": h_i = eta_h (m_i / rho_i)^(1/d), solved jointly with the
+//              summation by Newton iteration (Springel & Hernquist 2002; Price 2012, sec. 2.4);
+//              omega_i = 1 + h_i / (d rho_i) sum_j m_j dW/dh.
+// Smoothing length "seed": dh/dt = -h/(rho d) d rho/dt (eq. 1.3), applied with relaxation theta.
+#include <optional>
+
+#include "sim/sph/hydro_workspace.hpp"
+#include "sim/state/particles.hpp"
+
+namespace ejecta {
+
+// Requires: ghosts made (positions, velocities, masses, h). Produces the quantities above for
+// real particles and fills ws.lists' gather lists. Returns the lowest index of a particle whose
+// kernel-summed (or integrated) density is not positive, if any; the caller reports it.
+std::optional<std::size_t> runDensityPass(ParticleSet& p, HydroWorkspace& ws);
+
+// Smoothing length for the "neighbours" method from a density (continuity mode): h from the
+// particle's own mass and density.
+void setSmoothingFromDensity(ParticleSet& p, const HydroWorkspace& ws);
+
+}  // namespace ejecta
