@@ -497,9 +497,9 @@ bool tagsBalance(const std::string& xml) {
 
 TEST_F(OutputFiles, XdmfSeriesHasOneGridPerSnapshot) {
   const std::vector<XdmfEntry> entries = {
-      {"snapshots/snap_0000.h5", 0.0, 100, Geometry::Axisymmetric},
-      {"snapshots/snap_0001.h5", 1.25e-6, 100, Geometry::Axisymmetric},
-      {"snapshots/a&b.h5", 0.1, 98, Geometry::Axisymmetric},
+      {"snapshots/snap_0000.h5", 0.0, 100, Geometry::Axisymmetric, xdmfAttributes(ParticleSet{})},
+      {"snapshots/snap_0001.h5", 1.25e-6, 100, Geometry::Axisymmetric, xdmfAttributes(ParticleSet{})},
+      {"snapshots/a&b.h5", 0.1, 98, Geometry::Axisymmetric, xdmfAttributes(ParticleSet{})},
   };
   const std::string file = path("run.xdmf");
   writeXdmfSeries(file, entries);

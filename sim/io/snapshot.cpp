@@ -2,6 +2,7 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <stdexcept>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "sim/io/atomic_file.hpp"
+#include "sim/state/builtin_fields.hpp"
 
 namespace ejecta {
 
@@ -182,27 +184,43 @@ void writeScalarField(hid_t group, const DatasetSpec& spec, const std::vector<T>
   writeDataset(group, spec, n, false, values.data());
 }
 
-// Interleaves the first n entries of the three components into an (n, 3) dataset; components
-// at index >= keepComponents are written as zero.
-void writeVectorField(hid_t group, const DatasetSpec& spec, const Vec3Array& values,
-                      std::size_t n, int keepComponents = 3) {
-  for (const auto& component : values) requireSize(component, n, spec.name);
-  std::vector<double> rows(3 * n, 0.0);
-  for (int d = 0; d < keepComponents; ++d)
-    for (std::size_t i = 0; i < n; ++i) rows[3 * i + d] = values[d][i];
-  writeDataset(group, spec, n, true, rows.data());
-}
-
-// The first `columns` stress components as an (n, columns) dataset.
-void writeStressField(hid_t group, const DatasetSpec& spec,
-                      const std::array<std::vector<double>, 6>& values, std::size_t n,
-                      int columns) {
-  std::vector<double> rows(static_cast<std::size_t>(columns) * n);
+// Writes field f of the real particles as dataset f.spec.name in `group`: shape (n) for a scalar,
+// (n, components) otherwise, row-major; components beyond the geometry's dimension as zero when
+// the field says so (positions).
+void writeField(hid_t group, const ParticleSet& p, const Field& f, Geometry geometry) {
+  const std::size_t n = p.numReal;
+  const DatasetSpec spec{f.spec.name.c_str(), f.spec.units.c_str(), f.spec.description.c_str()};
+  switch (f.storage.kind) {
+    case FieldStorage::Kind::Int32: writeScalarField(group, spec, p.*f.storage.int32, n); return;
+    case FieldStorage::Kind::Int64: writeScalarField(group, spec, p.*f.storage.int64, n); return;
+    case FieldStorage::Kind::Derived: {
+      std::vector<double> values(n);
+      for (std::size_t i = 0; i < n; ++i) values[i] = f.spec.derive(p, i);
+      writeScalarField(group, spec, values, n);
+      return;
+    }
+    default: break;
+  }
+  const int columns = f.spec.components;
+  if (columns == 1) {
+    writeScalarField(group, spec, p.column(f, 0), n);
+    return;
+  }
+  const int keep = f.spec.writeDimensionOnly ? std::min(columns, spatialDimension(geometry)) : columns;
+  std::vector<double> rows(static_cast<std::size_t>(columns) * n, 0.0);
   for (int c = 0; c < columns; ++c) {
-    requireSize(values[c], n, spec.name);
-    for (std::size_t i = 0; i < n; ++i) rows[columns * i + c] = values[c][i];
+    const std::vector<double>& values = p.column(f, c);
+    requireSize(values, n, spec.name);
+    if (c < keep)
+      for (std::size_t i = 0; i < n; ++i) rows[columns * i + c] = values[i];
   }
   writeDataset(group, spec, n, true, rows.data(), static_cast<hsize_t>(columns));
+}
+
+// Every field of `p` whose declaration stores it in `output`, in registry order.
+void writeFields(hid_t group, const ParticleSet& p, FieldOutput output, Geometry geometry) {
+  for (const Field& f : p.fields())
+    if (f.spec.output == output) writeField(group, p, f, geometry);
 }
 
 Hid createGroup(hid_t file, const char* name) {
@@ -220,46 +238,8 @@ void writeRootAttributes(hid_t file, const SnapshotInfo& info) {
 }
 
 void writeParticles(hid_t file, const ParticleSet& p, Geometry geometry) {
-  const std::size_t n = p.numReal;
   const Hid group = createGroup(file, "/particles");
-  const hid_t g = group.get();
-  writeVectorField(g, {"position", "m", "particle position: 1D (x,0,0), 2D (x,y,0), RZ (r,z,0)"},
-                   p.x, n, spatialDimension(geometry));
-  writeVectorField(g, {"velocity", "m/s", "particle velocity; RZ: (v_r, v_z, v_phi)"}, p.v, n);
-  writeScalarField(g, {"density", "kg/m^3", "mass density"}, p.rho, n);
-  writeScalarField(g, {"pressure", "Pa", "pressure from the equation of state"}, p.P, n);
-  writeScalarField(g, {"internal_energy", "J/kg", "specific internal energy"}, p.u, n);
-  writeScalarField(g, {"smoothing_length", "m", "SPH smoothing length h"}, p.h, n);
-  writeScalarField(g, {"mass", "kg", "particle mass; RZ: whole ring; 2D planar: per metre of depth"},
-                   p.mass, n);
-  writeScalarField(g, {"material", "1", "index into the run's material table"}, p.material, n);
-  writeScalarField(g, {"id", "1", "stable particle identity"}, p.id, n);
-  writeScalarField(g, {"sound_speed", "m/s",
-                       "signal speed: the equation of state's sound speed; for materials with "
-                       "strength the longitudinal speed sqrt(c^2 + 4G/(3 rho))"}, p.cs, n);
-  writeScalarField(g, {"temperature", "K", "temperature T0 + u / c_v of the material"},
-                   p.temperature, n);
-  if (p.stressComponents() > 0) {
-    writeStressField(g, {"stress", "Pa",
-                         p.stressComponents() == 6
-                             ? "deviatoric stress: xx, yy, zz, xy, xz, yz"
-                             : "deviatoric stress: xx, yy, zz, xy (RZ: rr, zz, theta-theta, rz)"},
-                     p.stress, n, p.stressComponents());
-    writeScalarField(g, {"plastic_strain", "1", "equivalent plastic strain"}, p.plasticStrain, n);
-  }
-  if (p.hasFracture()) {
-    std::vector<double> damage(n);
-    for (std::size_t i = 0; i < n; ++i) damage[i] = p.damage(i);
-    writeScalarField(g, {"damage", "1", "damage D in [0, 1] (1: no tension, no shear)"}, damage, n);
-  }
-  if (p.hasBurn())
-    writeScalarField(g, {"burn_fraction", "1",
-                         "programmed-burn fraction F in [0, 1] (the factor on the JWL pressure)"},
-                     p.burnFraction, n);
-  if (p.hasViscositySwitch())
-    writeScalarField(g, {"viscosity_alpha", "1",
-                         "artificial-viscosity coefficient alpha of the Morris-Monaghan switch"},
-                     p.alpha, n);
+  writeFields(group.get(), p, FieldOutput::Particles, geometry);
 }
 
 void writeStringDataset(hid_t group, const char* name, const std::string& text,
@@ -276,33 +256,9 @@ void writeStringDataset(hid_t group, const char* name, const std::string& text,
 }
 
 void writeRestart(hid_t file, const ParticleSet& p, const SnapshotInfo& info) {
-  const std::size_t n = p.numReal;
   const Hid group = createGroup(file, "/restart");
   const hid_t g = group.get();
-  writeVectorField(g, {"acceleration", "m/s^2", "acceleration of the last force evaluation"},
-                   p.a, n);
-  writeScalarField(g, {"du_dt", "J/kg/s", "rate of change of specific internal energy"},
-                   p.du_dt, n);
-  writeScalarField(g, {"drho_dt", "kg/m^3/s", "rate of change of density (continuity)"},
-                   p.drho_dt, n);
-  writeScalarField(g, {"dh_dt", "m/s", "rate of change of smoothing length"}, p.dh_dt, n);
-  if (p.stressComponents() > 0) {
-    writeStressField(g, {"dstress_dt", "Pa/s", "rate of the deviatoric stress"}, p.dstress_dt, n,
-                     p.stressComponents());
-    writeScalarField(g, {"total_strain", "1", "equivalent total strain"}, p.totalStrain, n);
-    writeScalarField(g, {"strain_rate", "1/s", "equivalent strain rate"}, p.strainRate, n);
-  }
-  if (p.hasFracture()) {
-    writeScalarField(g, {"crack", "1", "crack fraction D^(1/3)"}, p.crack, n);
-    writeScalarField(g, {"dcrack_dt", "1/s", "rate of the crack fraction"}, p.dcrack_dt, n);
-  }
-  if (p.hasBurn())
-    writeScalarField(g, {"lighting_time", "s",
-                         "programmed-burn lighting time (-inf: not an explosive)"},
-                     p.lightingTime, n);
-  if (p.hasViscositySwitch())
-    writeScalarField(g, {"dalpha_dt", "1/s", "rate of the viscosity switch's alpha"},
-                     p.dalpha_dt, n);
+  writeFields(g, p, FieldOutput::Restart, info.geometry);
   writeStringDataset(g, "scene_source", info.sceneSource, "text of the scene file of the run");
   writeScalarAttribute(g, "dt_next", info.dtNext);
   writeScalarAttribute<std::int64_t>(g, "snapshot_index", info.snapshotIndex);
@@ -401,16 +357,6 @@ std::vector<T> readDataset(hid_t file, const std::string& path, std::size_t n, b
     check(H5Dread(dset.get(), H5Type<T>::memory(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
           "cannot read dataset '" + path + "'");
   return values;
-}
-
-Vec3Array readVectorField(hid_t file, const std::string& path, std::size_t n) {
-  const std::vector<double> rows = readDataset<double>(file, path, n, true);
-  Vec3Array out;
-  for (int d = 0; d < 3; ++d) {
-    out[d].resize(n);
-    for (std::size_t i = 0; i < n; ++i) out[d][i] = rows[3 * i + d];
-  }
-  return out;
 }
 
 std::size_t particleCount(hid_t file) {
@@ -541,27 +487,76 @@ void readRestartAttributes(hid_t file, SnapshotInfo& info) {
   info.sceneSource = readStringDataset(file, "/restart/scene_source");
 }
 
+std::string groupPath(FieldOutput output) {
+  return output == FieldOutput::Particles ? "/particles" : "/restart";
+}
+
+// Reads field f (a stored one) from `path`, shape (n) or (n, components).
+void readField(hid_t file, const std::string& path, ParticleSet& p, const Field& f, std::size_t n) {
+  switch (f.storage.kind) {
+    case FieldStorage::Kind::Int32: p.*f.storage.int32 = readDataset<int>(file, path, n, false); return;
+    case FieldStorage::Kind::Int64: p.*f.storage.int64 = readDataset<std::int64_t>(file, path, n, false); return;
+    default: break;
+  }
+  const int columns = f.spec.components;
+  if (columns == 1) {
+    p.column(f, 0) = readDataset<double>(file, path, n, false);
+    return;
+  }
+  const std::vector<double> rows = readDataset<double>(file, path, n, true, static_cast<hsize_t>(columns));
+  for (int c = 0; c < columns; ++c) {
+    std::vector<double>& column = p.column(f, c);
+    column.resize(n);
+    for (std::size_t i = 0; i < n; ++i) column[i] = rows[columns * i + c];
+  }
+}
+
+// The names of the datasets in group `path`, in name order.
+std::vector<std::string> datasetNames(hid_t file, const std::string& path) {
+  std::vector<std::string> names;
+  const Hid group = openGroup(file, path);
+  auto collect = [](hid_t, const char* name, const H5L_info_t*, void* out) -> herr_t {
+    static_cast<std::vector<std::string>*>(out)->push_back(name);
+    return 0;
+  };
+  hsize_t index = 0;
+  check(H5Literate(group.get(), H5_INDEX_NAME, H5_ITER_INC, &index, collect, &names),
+        "cannot list '" + path + "'");
+  return names;
+}
+
+// The fields of packages (ones no built-in group declares): every floating-point dataset of
+// shape (n) or (n, k) in /particles or /restart that is not a carried field, declared with its
+// stored units and description so the package that owns it finds its values when it declares
+// it again (ParticleSet::declare keeps them).
+void readPackageFields(hid_t file, ParticleSet& p, std::size_t n) {
+  std::vector<std::string> builtin;
+  for (const Field& f : allBuiltinFields()) builtin.push_back(f.spec.name);
+  for (const FieldOutput output : {FieldOutput::Particles, FieldOutput::Restart}) {
+    const std::string group = groupPath(output);
+    for (const std::string& name : datasetNames(file, group)) {
+      if (p.field(name) || std::find(builtin.begin(), builtin.end(), name) != builtin.end()) continue;
+      const std::string path = group + "/" + name;
+      const Hid dset = openDataset(file, path);
+      const Hid type = checked(H5Dget_type(dset.get()), H5Tclose, "cannot get type of '" + path + "'");
+      const std::vector<hsize_t> dims = datasetShape(dset.get(), path);
+      if (H5Tget_class(type.get()) != H5T_FLOAT || dims.empty() || dims.size() > 2 || dims[0] != n) continue;
+      FieldSpec spec;
+      spec.name = name;
+      spec.units = readStringAttribute(dset.get(), "units", "'" + path + "'");
+      spec.description = readStringAttribute(dset.get(), "description", "'" + path + "'");
+      spec.components = dims.size() == 2 ? static_cast<int>(dims[1]) : 1;
+      spec.output = output;
+      p.declare(spec);
+      readField(file, path, p, *p.field(name), n);
+    }
+  }
+}
+
 ParticleSet readParticles(hid_t file) {
   const std::size_t n = particleCount(file);
   ParticleSet p;
-  p.resize(n);  // zeroes everything, omega = 1
-  p.numReal = n;
-  p.x = readVectorField(file, "/particles/position", n);
-  p.v = readVectorField(file, "/particles/velocity", n);
-  p.rho = readDataset<double>(file, "/particles/density", n, false);
-  p.P = readDataset<double>(file, "/particles/pressure", n, false);
-  p.u = readDataset<double>(file, "/particles/internal_energy", n, false);
-  p.h = readDataset<double>(file, "/particles/smoothing_length", n, false);
-  p.mass = readDataset<double>(file, "/particles/mass", n, false);
-  p.material = readDataset<int>(file, "/particles/material", n, false);
-  p.id = readDataset<std::int64_t>(file, "/particles/id", n, false);
-  p.cs = readDataset<double>(file, "/particles/sound_speed", n, false);
-  p.a = readVectorField(file, "/restart/acceleration", n);
-  p.du_dt = readDataset<double>(file, "/restart/du_dt", n, false);
-  p.drho_dt = readDataset<double>(file, "/restart/drho_dt", n, false);
-  p.dh_dt = readDataset<double>(file, "/restart/dh_dt", n, false);
-  if (linkExists(file, "/particles/temperature"))
-    p.temperature = readDataset<double>(file, "/particles/temperature", n, false);
+  // The optional groups a snapshot carries, each known by one of its datasets.
   if (linkExists(file, "/particles/stress")) {
     const Hid dset = openDataset(file, "/particles/stress");
     const std::vector<hsize_t> dims = datasetShape(dset.get(), "/particles/stress");
@@ -570,32 +565,19 @@ ParticleSet readParticles(hid_t file) {
       throw std::runtime_error("dataset '/particles/stress' has shape " + shapeText(dims) +
                                ", expected (N, 4) or (N, 6)");
     p.enableStrength(columns);
-    const std::vector<double> stress = readDataset<double>(file, "/particles/stress", n, true, columns);
-    const std::vector<double> rate = readDataset<double>(file, "/restart/dstress_dt", n, true, columns);
-    for (int c = 0; c < columns; ++c)
-      for (std::size_t i = 0; i < n; ++i) {
-        p.stress[c][i] = stress[columns * i + c];
-        p.dstress_dt[c][i] = rate[columns * i + c];
-      }
-    p.plasticStrain = readDataset<double>(file, "/particles/plastic_strain", n, false);
-    p.totalStrain = readDataset<double>(file, "/restart/total_strain", n, false);
-    p.strainRate = readDataset<double>(file, "/restart/strain_rate", n, false);
   }
-  if (linkExists(file, "/restart/crack")) {
-    p.enableFracture();
-    p.crack = readDataset<double>(file, "/restart/crack", n, false);
-    p.dcrack_dt = readDataset<double>(file, "/restart/dcrack_dt", n, false);
+  if (linkExists(file, "/restart/crack")) p.enableFracture();
+  if (linkExists(file, "/restart/lighting_time")) p.enableBurn();
+  if (linkExists(file, "/particles/viscosity_alpha")) p.enableViscositySwitch(0.0);
+  p.resize(n);  // zeroes everything, omega = 1
+  p.numReal = n;
+  for (const Field& f : p.fields()) {
+    if (f.spec.output == FieldOutput::None || f.spec.derive) continue;
+    const std::string path = groupPath(f.spec.output) + "/" + f.spec.name;
+    if (!f.spec.required && !linkExists(file, path)) continue;
+    readField(file, path, p, f, n);
   }
-  if (linkExists(file, "/restart/lighting_time")) {
-    p.enableBurn();
-    p.lightingTime = readDataset<double>(file, "/restart/lighting_time", n, false);
-    p.burnFraction = readDataset<double>(file, "/particles/burn_fraction", n, false);
-  }
-  if (linkExists(file, "/particles/viscosity_alpha")) {
-    p.enableViscositySwitch(0.0);
-    p.alpha = readDataset<double>(file, "/particles/viscosity_alpha", n, false);
-    p.dalpha_dt = readDataset<double>(file, "/restart/dalpha_dt", n, false);
-  }
+  readPackageFields(file, p, n);
   return p;
 }
 

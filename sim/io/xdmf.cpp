@@ -33,25 +33,20 @@ std::string exactNumber(double value) {
   return std::string(buffer, result.ptr);
 }
 
-struct AttributeSpec {
-  const char* name;
-  const char* numberType;  // XDMF NumberType
-  int precision;           // bytes
-};
-
-// The per-particle datasets published to visualisation tools (all in /particles).
-constexpr AttributeSpec kScalars[] = {
-    {"density", "Float", 8},         {"pressure", "Float", 8},
-    {"internal_energy", "Float", 8}, {"smoothing_length", "Float", 8},
-    {"sound_speed", "Float", 8},     {"mass", "Float", 8},
-    {"material", "Int", 4},          {"id", "Int", 8},
-};
-
-void writeDataItem(std::ostream& out, const std::string& dims, const AttributeSpec& spec,
+void writeDataItem(std::ostream& out, const std::string& dims, const XdmfAttribute& spec,
                    const std::string& file) {
-  out << "        <DataItem Dimensions=\"" << dims << "\" NumberType=\"" << spec.numberType
-      << "\" Precision=\"" << spec.precision << "\" Format=\"HDF\">" << file
-      << ":/particles/" << spec.name << "</DataItem>\n";
+  out << "        <DataItem Dimensions=\"" << dims << "\" NumberType=\""
+      << (spec.integer ? "Int" : "Float") << "\" Precision=\"" << spec.precision
+      << "\" Format=\"HDF\">" << file << ":/particles/" << spec.name << "</DataItem>\n";
+}
+
+const char* attributeType(int components) {
+  switch (components) {
+    case 1: return "Scalar";
+    case 3: return "Vector";
+    case 6: return "Tensor6";
+    default: return "Matrix";
+  }
 }
 
 void writeGrid(std::ostream& out, const XdmfEntry& entry, std::size_t index) {
@@ -64,21 +59,31 @@ void writeGrid(std::ostream& out, const XdmfEntry& entry, std::size_t index) {
       << "      <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n
       << "\" NodesPerElement=\"1\"/>\n"
       << "      <Geometry GeometryType=\"XYZ\">\n";
-  writeDataItem(out, n + " 3", {"position", "Float", 8}, file);
+  writeDataItem(out, n + " 3", {"position", 3, false, 8}, file);
   out << "      </Geometry>\n";
-  for (const AttributeSpec& spec : kScalars) {
-    out << "      <Attribute Name=\"" << spec.name
-        << "\" AttributeType=\"Scalar\" Center=\"Node\">\n";
-    writeDataItem(out, n, spec, file);
+  for (const XdmfAttribute& spec : entry.attributes) {
+    out << "      <Attribute Name=\"" << spec.name << "\" AttributeType=\""
+        << attributeType(spec.components) << "\" Center=\"Node\">\n";
+    writeDataItem(out, spec.components == 1 ? n : n + " " + std::to_string(spec.components), spec, file);
     out << "      </Attribute>\n";
   }
-  out << "      <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n";
-  writeDataItem(out, n + " 3", {"velocity", "Float", 8}, file);
-  out << "      </Attribute>\n"
-      << "    </Grid>\n";
+  out << "    </Grid>\n";
 }
 
 }  // namespace
+
+std::vector<XdmfAttribute> xdmfAttributes(const ParticleSet& p) {
+  std::vector<XdmfAttribute> scalars, others;
+  for (const Field& f : p.fields()) {
+    if (!f.spec.xdmf || f.spec.output != FieldOutput::Particles) continue;
+    const bool integer = f.spec.type != FieldType::Float64;
+    const int precision = f.spec.type == FieldType::Int32 ? 4 : 8;
+    (f.spec.components == 1 ? scalars : others)
+        .push_back({f.spec.name, f.spec.components, integer, precision});
+  }
+  scalars.insert(scalars.end(), others.begin(), others.end());
+  return scalars;
+}
 
 void writeXdmfSeries(const std::string& xdmfPath, const std::vector<XdmfEntry>& entries) {
   std::ostringstream out;

@@ -182,7 +182,8 @@ class RunOutputs {
     info.sceneSource = sourceWithOverrides(options_, sim.depositFirings());
     ejecta::writeSnapshot((fs::path(options_.outDir) / "snapshots" / name).string(),
                           sim.particles(), info);
-    xdmf_.push_back({"snapshots/" + name, info.time, sim.particles().numReal, info.geometry});
+    xdmf_.push_back({"snapshots/" + name, info.time, sim.particles().numReal, info.geometry,
+                     xdmfAttributes(sim.particles())});
     writeXdmfSeries((fs::path(options_.outDir) / "snapshots.xdmf").string(), xdmf_);
   }
   void setSeries(std::vector<XdmfEntry> entries) { xdmf_ = std::move(entries); }
@@ -412,6 +413,7 @@ RunOutcome runScene(const Scene& scene, const RunOptions& baseOptions) {
   MaterialTable materials = MaterialTable::fromScene(scene);
   ParticleSet particles = buildParticles(scene, materials);
   Simulation sim(scene, std::move(particles), std::move(materials), threads);
+  for (const auto& package : options.packages) sim.addPackage(package);
   return runSimulation(sim, options);
 }
 
@@ -451,12 +453,18 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
 
   RunOutputs outputs(options);
   std::vector<XdmfEntry> series;
+  // The packages' declarations say which of their fields the XDMF lists (a snapshot stores the
+  // values, not the declaration).
+  for (const auto& package : options.packages) package->registerFields(particles);
   for (const fs::path& f : files) {
     SnapshotInfo earlier;
-    const ParticleSet q = f == files.back() ? ParticleSet{} : readSnapshot(f.string(), earlier);
+    ParticleSet q = f == files.back() ? ParticleSet{} : readSnapshot(f.string(), earlier);
+    if (f != files.back())
+      for (const auto& package : options.packages) package->registerFields(q);
     const double time = f == files.back() ? info.time : earlier.time;
-    const std::size_t n = f == files.back() ? particles.numReal : q.numReal;
-    series.push_back({"snapshots/" + f.filename().string(), time, n, scene.geometry});
+    const ParticleSet& stored = f == files.back() ? particles : q;
+    series.push_back({"snapshots/" + f.filename().string(), time, stored.numReal, scene.geometry,
+                      xdmfAttributes(stored)});
   }
   outputs.setSeries(series);
   outputs.truncateEnergyLog(info.step);
@@ -472,6 +480,7 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
   }();
   const ParticleSet initial = needsFlaws ? buildParticles(scene, materials) : ParticleSet{};
   Simulation sim(scene, std::move(particles), std::move(materials), threads);
+  for (const auto& package : options.packages) sim.addPackage(package);
   if (needsFlaws) sim.distributeFlaws(initial);
   sim.resume(info.time, info.step, info.dtNext);
   sim.restoreDepositFirings(std::move(firings));

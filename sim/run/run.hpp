@@ -3,6 +3,7 @@
 // the energy ledger of every step (energy.csv), summary.json, and a progress line on a terminal.
 // A failure of the numerics writes a last snapshot and a summary with status "failed".
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +31,9 @@ struct RunOptions {
   // Called by runScene and restartRun once the scene is known (a restart reads it from the
   // snapshot), to add hooks for it: the command line adds the fields/ outputs here.
   std::function<void(const Scene&, RunOptions&)> configure;
+  // Physics packages beyond what the scene assembles (sim/run/physics_package.hpp), added to the
+  // simulation of a new run and of a restart alike.
+  std::vector<std::shared_ptr<const PhysicsPackage>> packages;
 };
 
 struct RunOutcome {

@@ -97,6 +97,16 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
     throw SimulationError("scene '" + scene_.name + "' detonates an explosive but the particles "
                           "carry no lighting times (build them with buildParticles)");
   initialiseViscosityAlpha(p_, scene_.sph);  // a restart keeps its snapshot's alpha
+  if (p_.hasViscositySwitch()) p_.setClampRange("viscosity_alpha", scene_.sph.alphaMin, scene_.sph.alpha);
+  // Summation density sets rho in the density pass, and h tied to the density sets h: the
+  // leapfrog advances them only when the scene integrates them.
+  if (scene_.sph.density != DensityMethod::Continuity) leapfrog_.hold("density");
+  if (scene_.sph.smoothingLength != SmoothingLengthMethod::Seed) leapfrog_.hold("smoothing_length");
+}
+
+void Simulation::addPackage(std::shared_ptr<const PhysicsPackage> package) {
+  package->registerFields(p_);
+  packages_.push_back(std::move(package));
 }
 
 void Simulation::distributeFlaws(const ParticleSet& initial) {
@@ -200,6 +210,7 @@ void Simulation::evaluateDerivatives() {
   }
   runForcePass(p_, ws_);
   computeCrackGrowth(p_, materials_, flaws_, dim);
+  for (const auto& package : packages_) package->evaluateDerivatives(p_, stateTime_);
 }
 
 void Simulation::computeNextTimestep() {
@@ -220,6 +231,7 @@ void Simulation::computeNextTimestep() {
   // Crack growth: no Grady-Kipp crack fraction may grow by more than maxCrackIncrement in a
   // step, so that the stress a cracking particle sheds reaches its neighbours while it cracks.
   double dt = std::min({dtCourant, dtForce, crackGrowthTimestep(p_, materials_)});
+  for (const auto& package : packages_) dt = std::min(dt, package->timestep(p_));
   if (scene_.time.dtMax > 0.0 && dt > scene_.time.dtMax) dt = scene_.time.dtMax;
   if (dt == std::numeric_limits<double>::max()) dt = scene_.time.dtMax > 0 ? scene_.time.dtMax
                                                                          : scene_.time.tEnd;
@@ -265,37 +277,6 @@ void Simulation::checkHealth(double dt) const {
     std::ostringstream s;
     s << "time step " << dt << " s fell below dt_min " << dtMin << " s";
     failAt(worst, s.str());
-  }
-}
-
-void Simulation::kickSolidState(double half, bool predict) {
-  const std::size_t n = p_.numReal;
-  const int nc = p_.stressComponents();
-  const bool fracture = p_.hasFracture();
-  if (predict) {
-    for (int c = 0; c < nc; ++c) stressHalf_[c].resize(n);
-    crackHalf_.resize(fracture ? n : 0);
-    strainHalf_.resize(nc > 0 ? n : 0);
-  }
-  if (nc == 0 && !fracture) return;
-  // Damage caps of the state this kick starts from, before its stress moves.
-  const std::vector<double> caps =
-      fracture ? crackCaps(p_, materials_, flaws_, ws_.dim) : std::vector<double>{};
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    // Predict: y_half = y + dt/2 y', y = y_half + dt/2 y'. Final: y = y_half + dt/2 y'_new.
-    for (int c = 0; c < nc; ++c) {
-      if (predict) stressHalf_[c][i] = p_.stress[c][i] + half * p_.dstress_dt[c][i];
-      p_.stress[c][i] = stressHalf_[c][i] + half * p_.dstress_dt[c][i];
-    }
-    if (nc > 0) {
-      if (predict) strainHalf_[i] = p_.totalStrain[i] + half * p_.strainRate[i];
-      p_.totalStrain[i] = strainHalf_[i] + half * p_.strainRate[i];
-    }
-    if (fracture) {  // bounded by the cap, which an explicit update could overshoot
-      if (predict) crackHalf_[i] = advanceCrack(p_.crack[i], p_.dcrack_dt[i], half, caps[i]);
-      p_.crack[i] = advanceCrack(crackHalf_[i], p_.dcrack_dt[i], half, caps[i]);
-    }
   }
 }
 
@@ -357,56 +338,26 @@ void Simulation::step(double limit) {
   limit = std::min(limit, nextDepositTime());
   double dt = dtNext_;
   if (time_ + dt > limit) dt = limit - time_;
-  const std::size_t n = p_.numReal;
   const SphOptions& sph = scene_.sph;
-  const bool continuity = sph.density == DensityMethod::Continuity;
-  const bool seedH = sph.smoothingLength == SmoothingLengthMethod::Seed;
   const int dim = ws_.dim;
-  for (int d = 0; d < 3; ++d) vHalf_[d].resize(n);
-  uHalf_.resize(n);
-  rhoHalf_.resize(continuity ? n : 0);
-  hHalf_.resize(seedH ? n : 0);
-  const double half = 0.5 * dt;
+  // The crack's cap comes from the state its kick starts from (sim/run/leapfrog.hpp).
+  leapfrog_.setCaps("crack", [this](const ParticleSet& p) {
+    return crackCaps(p, materials_, flaws_, ws_.dim);
+  });
 
-  // Kick to the half step, drift positions, predict v and u (and rho, h) to the full step.
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    for (int d = 0; d < dim; ++d) {
-      vHalf_[d][i] = p_.v[d][i] + half * p_.a[d][i];
-      p_.x[d][i] += dt * vHalf_[d][i];
-      p_.v[d][i] = vHalf_[d][i] + half * p_.a[d][i];
-    }
-    uHalf_[i] = p_.u[i] + half * p_.du_dt[i];
-    p_.u[i] = uHalf_[i] + half * p_.du_dt[i];
-    if (continuity) {
-      rhoHalf_[i] = p_.rho[i] + half * p_.drho_dt[i];
-      p_.rho[i] = rhoHalf_[i] + half * p_.drho_dt[i];
-    }
-    if (seedH) {
-      hHalf_[i] = p_.h[i] + half * p_.dh_dt[i];
-      p_.h[i] = hHalf_[i] + half * p_.dh_dt[i];
-    }
-  }
-  kickSolidState(half, true);
-  kickViscosityAlpha(p_, alphaHalf_, sph, half, true);
+  // Kick to the half step, drift positions, predict every evolved field to the full step.
+  leapfrog_.predict(p_, dim, dt);
   applyPlasticity(p_, materials_, false);
-  boundaries_.confine(p_, &vHalf_);
-  if (continuity && sph.smoothingLength == SmoothingLengthMethod::Neighbours)
+  boundaries_.confine(p_, &leapfrog_.velocityHalf());
+  if (sph.density == DensityMethod::Continuity &&
+      sph.smoothingLength == SmoothingLengthMethod::Neighbours)
     setSmoothingFromDensity(p_, ws_);
 
   stateTime_ = time_ + dt;
   evaluateDerivatives();
 
   // Second kick with the new derivatives.
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    for (int d = 0; d < dim; ++d) p_.v[d][i] = vHalf_[d][i] + half * p_.a[d][i];
-    p_.u[i] = uHalf_[i] + half * p_.du_dt[i];
-    if (continuity) p_.rho[i] = rhoHalf_[i] + half * p_.drho_dt[i];
-    if (seedH) p_.h[i] = hHalf_[i] + half * p_.dh_dt[i];
-  }
-  kickSolidState(half, false);
-  kickViscosityAlpha(p_, alphaHalf_, sph, half, false);
+  leapfrog_.correct(p_, dim, dt);
   // Pressure and sound speed of the final state, for the snapshot and the next time step.
   evaluateEquationOfState();
   applyPlasticity(p_, materials_, true);

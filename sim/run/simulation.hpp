@@ -6,6 +6,7 @@
 // n+1 use velocities and energies predicted to n+1. Every step: neighbours -> density pass ->
 // equation of state -> force pass; then the time-step criteria and a health check.
 #include <array>
+#include <memory>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -14,6 +15,8 @@
 #include "sim/sph/boundaries.hpp"
 #include "sim/state/conservation.hpp"
 #include "sim/sph/hydro_workspace.hpp"
+#include "sim/run/leapfrog.hpp"
+#include "sim/run/physics_package.hpp"
 #include "sim/solid/materials.hpp"
 #include "sim/state/particles.hpp"
 #include "sim/sources/programmed_burn.hpp"
@@ -52,6 +55,9 @@ class Simulation {
   // run uses its own particles (initialise() does this); a restarted run must pass the scene's
   // freshly built particles so it draws the same flaws.
   void distributeFlaws(const ParticleSet& initial);
+  // Adds a physics package (sim/run/physics_package.hpp) before the first step or resume():
+  // its fields are declared on the particles now.
+  void addPackage(std::shared_ptr<const PhysicsPackage> package);
   // Particles that failed (principal stress or erosion) in the last step.
   std::size_t lastFailures() const { return lastFailures_; }
 
@@ -82,8 +88,6 @@ class Simulation {
  private:
   void evaluateDerivatives();
   void evaluateEquationOfState();
-  // Kick (and predict) the solid state: deviatoric stress, crack fraction, total strain.
-  void kickSolidState(double half, bool predict);
   void computeNextTimestep();
   void checkHealth(double dt) const;
   // Throws SimulationError naming the step, time, `reason` and particle i's state.
@@ -112,12 +116,8 @@ class Simulation {
   // predicted end of the step).
   BurnTable burn_;
   double stateTime_ = 0.0;
-  // Leapfrog half-step state.
-  Vec3Array vHalf_;
-  std::vector<double> uHalf_, rhoHalf_, hHalf_;
-  std::array<std::vector<double>, 6> stressHalf_;
-  std::vector<double> crackHalf_, strainHalf_;
-  std::vector<double> alphaHalf_;  // viscosity switch (sim/sph/hydro_force.hpp)
+  Leapfrog leapfrog_;  // and its half-step state
+  std::vector<std::shared_ptr<const PhysicsPackage>> packages_;
   FlawSet flaws_;
   bool flawsReady_ = false;
   std::size_t lastFailures_ = 0;

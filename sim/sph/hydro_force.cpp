@@ -336,19 +336,6 @@ void initialiseViscosityAlpha(ParticleSet& p, const SphOptions& sph) {
     if (std::isfinite(p.lightingTime[i])) p.alpha[i] = sph.alpha;
 }
 
-void kickViscosityAlpha(ParticleSet& p, std::vector<double>& alphaHalf, const SphOptions& sph,
-                        double half, bool predict) {
-  if (sph.viscositySwitch == ViscositySwitch::None) return;
-  const std::size_t n = p.numReal;
-  const double lo = sph.alphaMin, hi = sph.alpha;
-  if (predict) alphaHalf.resize(n);
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    if (predict) alphaHalf[i] = std::clamp(p.alpha[i] + half * p.dalpha_dt[i], lo, hi);
-    p.alpha[i] = std::clamp(alphaHalf[i] + half * p.dalpha_dt[i], lo, hi);
-  }
-}
-
 void runForcePass(ParticleSet& p, HydroWorkspace& ws) {
   const bool solid = p.stressComponents() > 0;
   const MomentumForm form = ws.sph.form;

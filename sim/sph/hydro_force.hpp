@@ -28,10 +28,4 @@ void runForcePass(ParticleSet& p, HydroWorkspace& ws);
 // detonation shock is certain to cross. No-op when the switch is off or alpha is present.
 void initialiseViscosityAlpha(ParticleSet& p, const SphOptions& sph);
 
-// Leapfrog kick of alpha, as for u: predict: alphaHalf = alpha + half rate, alpha = alphaHalf +
-// half rate; otherwise alpha = alphaHalf + half rate (the new rate). Kept in [alpha_min,
-// alpha_max] (the exact solution of the equation never leaves it). No-op without the switch.
-void kickViscosityAlpha(ParticleSet& p, std::vector<double>& alphaHalf, const SphOptions& sph,
-                        double half, bool predict);
-
 }  // namespace ejecta

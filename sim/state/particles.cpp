@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "sim/state/builtin_fields.hpp"
 
 namespace ejecta {
 
@@ -14,30 +18,109 @@ void permuteArray(std::vector<T>& data, const std::vector<std::size_t>& order) {
   data.swap(out);
 }
 
-// Applies f to every per-particle array.
-template <typename F>
-void forEachArray(ParticleSet& p, F&& f) {
-  for (int d = 0; d < 3; ++d) { f(p.x[d]); f(p.v[d]); f(p.a[d]); }
-  f(p.mass); f(p.rho); f(p.u); f(p.h); f(p.material); f(p.id);
-  f(p.P); f(p.cs); f(p.du_dt); f(p.drho_dt); f(p.dh_dt);
-  f(p.omega); f(p.divv); f(p.curlv); f(p.areaDensity); f(p.temperature);
-  for (int c = 0; c < p.stressComponents(); ++c) { f(p.stress[c]); f(p.dstress_dt[c]); }
-  if (p.stressComponents() > 0) { f(p.plasticStrain); f(p.totalStrain); f(p.strainRate); }
-  if (p.hasFracture()) { f(p.crack); f(p.dcrack_dt); }
-  if (p.hasBurn()) { f(p.lightingTime); f(p.burnFraction); }
-  if (p.hasViscositySwitch()) { f(p.alpha); f(p.dalpha_dt); }
-}
-
 }  // namespace
 
+ParticleSet::ParticleSet() { addGroup(FieldGroup::Core); }
+
+// Applies f(column, fill) to every stored column of every field this set carries.
+template <typename F>
+void ParticleSet::forEachColumn(F&& f) {
+  for (const Field& field : fields_) {
+    const FieldStorage& s = field.storage;
+    const double fill = field.spec.fill;
+    switch (s.kind) {
+      case FieldStorage::Kind::Scalar: f(this->*s.scalar, fill); break;
+      case FieldStorage::Kind::Vector:
+        for (auto& c : this->*s.vector) f(c, fill);
+        break;
+      case FieldStorage::Kind::Stress:
+        for (int c = 0; c < field.spec.components; ++c) f((this->*s.stress)[c], fill);
+        break;
+      case FieldStorage::Kind::Int32: f(this->*s.int32, 0); break;
+      case FieldStorage::Kind::Int64: f(this->*s.int64, 0); break;
+      case FieldStorage::Kind::Extra:
+        for (int c = 0; c < field.spec.components; ++c) f(extra_[s.extra + c], fill);
+        break;
+      case FieldStorage::Kind::Derived: break;
+    }
+  }
+}
+
+void ParticleSet::addGroup(FieldGroup group) {
+  if (std::find(fieldGroups_.begin(), fieldGroups_.end(), group) != fieldGroups_.end()) return;
+  // Groups keep their registry rank whatever order they are enabled in (FieldGroup's order).
+  std::size_t at = 0;
+  while (at < fieldGroups_.size() && fieldGroups_[at] <= group) ++at;
+  const std::vector<Field> added = builtinFields(group, stressComponents_ > 0 ? stressComponents_ : 6);
+  fields_.insert(fields_.begin() + static_cast<std::ptrdiff_t>(at), added.begin(), added.end());
+  fieldGroups_.insert(fieldGroups_.begin() + static_cast<std::ptrdiff_t>(at), added.size(), group);
+}
+
+const Field* ParticleSet::field(std::string_view name) const {
+  for (const Field& f : fields_)
+    if (f.spec.name == name) return &f;
+  return nullptr;
+}
+
+std::vector<double>& ParticleSet::column(const Field& f, int c) {
+  const FieldStorage& s = f.storage;
+  switch (s.kind) {
+    case FieldStorage::Kind::Scalar: return this->*s.scalar;
+    case FieldStorage::Kind::Vector: return (this->*s.vector)[static_cast<std::size_t>(c)];
+    case FieldStorage::Kind::Stress: return (this->*s.stress)[static_cast<std::size_t>(c)];
+    case FieldStorage::Kind::Extra: return extra_[s.extra + static_cast<std::size_t>(c)];
+    default: break;
+  }
+  throw std::logic_error("field '" + f.spec.name + "' has no floating-point column");
+}
+
+const std::vector<double>& ParticleSet::column(const Field& f, int c) const {
+  return const_cast<ParticleSet*>(this)->column(f, c);
+}
+
+void ParticleSet::declare(const FieldSpec& spec) {
+  for (std::size_t k = 0; k < fields_.size(); ++k) {
+    Field& existing = fields_[k];
+    if (existing.spec.name != spec.name) continue;
+    if (existing.spec.components != spec.components || existing.spec.type != FieldType::Float64)
+      throw std::invalid_argument("field '" + spec.name + "' is carried with " +
+                                  std::to_string(existing.spec.components) +
+                                  " components; its declaration has " +
+                                  std::to_string(spec.components));
+    existing.spec = spec;
+    return;
+  }
+  if (spec.type != FieldType::Float64 || spec.derive != nullptr || spec.components < 1)
+    throw std::invalid_argument("field '" + spec.name +
+                                "': a package declares stored floating-point fields only");
+  Field f{spec, {}};
+  f.storage.kind = FieldStorage::Kind::Extra;
+  f.storage.extra = extra_.size();
+  for (int c = 0; c < spec.components; ++c) extra_.emplace_back(size(), spec.fill);
+  fields_.push_back(std::move(f));
+  fieldGroups_.push_back(FieldGroup::Package);
+}
+
+void ParticleSet::setClampRange(std::string_view name, double lo, double hi) {
+  for (Field& f : fields_)
+    if (f.spec.name == name) {
+      f.spec.lo = lo;
+      f.spec.hi = hi;
+      return;
+    }
+  throw std::logic_error("setClampRange: no field '" + std::string(name) + "'");
+}
+
 void ParticleSet::resize(std::size_t n) {
-  const std::size_t old = size();
-  forEachArray(*this, [n](auto& arr) { arr.resize(n); });
-  for (std::size_t i = old; i < n; ++i) omega[i] = 1.0;
+  forEachColumn([n](auto& arr, double fill) {
+    using T = typename std::decay_t<decltype(arr)>::value_type;
+    arr.resize(n, static_cast<T>(fill));
+  });
 }
 
 void ParticleSet::enableStrength(int components) {
   stressComponents_ = components;
+  addGroup(FieldGroup::Strength);
   const std::size_t n = size();
   for (int c = 0; c < components; ++c) {
     stress[c].assign(n, 0.0);
@@ -50,18 +133,21 @@ void ParticleSet::enableStrength(int components) {
 
 void ParticleSet::enableFracture() {
   fracture_ = true;
+  addGroup(FieldGroup::Fracture);
   crack.assign(size(), 0.0);
   dcrack_dt.assign(size(), 0.0);
 }
 
 void ParticleSet::enableBurn() {
   burn_ = true;
+  addGroup(FieldGroup::Burn);
   lightingTime.assign(size(), -std::numeric_limits<double>::infinity());
   burnFraction.assign(size(), 1.0);
 }
 
 void ParticleSet::enableViscositySwitch(double initial) {
   viscositySwitch_ = true;
+  addGroup(FieldGroup::ViscositySwitch);
   alpha.assign(size(), initial);
   dalpha_dt.assign(size(), 0.0);
 }
@@ -82,13 +168,13 @@ void ParticleSet::append(const std::array<double, 3>& pos, const std::array<doub
 }
 
 void ParticleSet::clearGhosts() {
-  forEachArray(*this, [this](auto& arr) { arr.resize(numReal); });
+  forEachColumn([this](auto& arr, double) { arr.resize(numReal); });
   ghostSource.clear();
 }
 
 void ParticleSet::permute(const std::vector<std::size_t>& order) {
   clearGhosts();
-  forEachArray(*this, [&order](auto& arr) { permuteArray(arr, order); });
+  forEachColumn([&order](auto& arr, double) { permuteArray(arr, order); });
 }
 
 }  // namespace ejecta

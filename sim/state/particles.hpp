@@ -6,13 +6,42 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string_view>
 #include <vector>
+
+#include "sim/state/field_spec.hpp"
 
 namespace ejecta {
 
 using Vec3Array = std::array<std::vector<double>, 3>;
+using StressArray = std::array<std::vector<double>, 6>;
+
+// Where the values of a declared field live in a ParticleSet: a named member (the built-in
+// fields, which the hot loops use by name), a column of a package's own, or nowhere (derived).
+struct FieldStorage {
+  enum class Kind { Scalar, Vector, Stress, Int32, Int64, Extra, Derived };
+  Kind kind = Kind::Derived;
+  std::vector<double> ParticleSet::*scalar = nullptr;
+  Vec3Array ParticleSet::*vector = nullptr;
+  StressArray ParticleSet::*stress = nullptr;
+  std::vector<int> ParticleSet::*int32 = nullptr;
+  std::vector<std::int64_t> ParticleSet::*int64 = nullptr;
+  std::size_t extra = 0;  // Extra: index of the package's first column
+};
+
+// One field a ParticleSet carries: its declaration and where its values are.
+struct Field {
+  FieldSpec spec;
+  FieldStorage storage;
+};
+
+// The built-in fields come in groups that a run carries only when a term needs them.
+enum class FieldGroup { Core, Fracture, Strength, Burn, ViscositySwitch, Package };
 
 struct ParticleSet {
+  // The Core group's fields declared (sim/state/builtin_fields.cpp), no particles.
+  ParticleSet();
+
   // --- Primary state (integrated in time; written to snapshots) ---
   Vec3Array x;                  // position [m]; RZ: x[0] = r, x[1] = z
   Vec3Array v;                  // velocity [m/s]
@@ -45,8 +74,8 @@ struct ParticleSet {
   // --- Solid mechanics: allocated only when a material has strength (enableStrength) ---
   // Deviatoric stress [Pa], components in sim/state/tensor.hpp order (xx, yy, zz, xy, xz, yz); the
   // first stressComponents() are used (4 in 1D, 2D and RZ, where zz is the hoop stress; 6 in 3D).
-  std::array<std::vector<double>, 6> stress;
-  std::array<std::vector<double>, 6> dstress_dt;  // [Pa/s]
+  StressArray stress;
+  StressArray dstress_dt;  // [Pa/s]
   std::vector<double> plasticStrain;  // equivalent plastic strain
   std::vector<double> totalStrain;    // equivalent total strain, integral of strainRate
   std::vector<double> strainRate;     // equivalent strain rate sqrt(2/3 e':e') [1/s]
@@ -89,6 +118,23 @@ struct ParticleSet {
   void enableViscositySwitch(double initial);
   std::size_t numGhosts() const { return size() - numReal; }
 
+  // --- The field registry (sim/state/field_spec.hpp) ---
+  // Every field this set carries, in the order the leapfrog advances them: the Core group, then
+  // Fracture before Strength (a crack's cap is computed from the stress before its kick), then
+  // Burn, the viscosity switch, and packages' fields in the order they were declared.
+  const std::vector<Field>& fields() const { return fields_; }
+  // The field called `name`, or nullptr.
+  const Field* field(std::string_view name) const;
+  // Component c of a Float64 field with storage (throws std::logic_error otherwise).
+  std::vector<double>& column(const Field& f, int c);
+  const std::vector<double>& column(const Field& f, int c) const;
+  // Declares a package's Float64 field (FieldGroup::Package), its entries set to spec.fill. A
+  // field of that name already carried (e.g. read back from a snapshot) keeps its values and
+  // takes this declaration; its component count must match (std::invalid_argument otherwise).
+  void declare(const FieldSpec& spec);
+  // Sets the range of a Clamp-limited field (the viscosity switch's alpha from the scene).
+  void setClampRange(std::string_view name, double lo, double hi);
+
   // Resize every array to n particles (new entries zeroed; omega set to 1).
   void resize(std::size_t n);
   // Append one particle with primary state; derived fields zeroed.
@@ -101,6 +147,12 @@ struct ParticleSet {
   void permute(const std::vector<std::size_t>& order);
 
  private:
+  void addGroup(FieldGroup group);
+  template <typename F> void forEachColumn(F&& f);
+
+  std::vector<Field> fields_;
+  std::vector<FieldGroup> fieldGroups_;       // the group of each entry of fields_
+  std::vector<std::vector<double>> extra_;    // packages' columns
   int stressComponents_ = 0;
   bool fracture_ = false;
   bool burn_ = false;

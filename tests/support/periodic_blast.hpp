@@ -50,12 +50,14 @@ radius = 0.06
 // into `cut`, removes cut's snapshots 3 and 4 and resumes cut from its snapshot 2 (halfway), so
 // that full/ and cut/ snapshots/snap_0004.h5 can be compared. Fails the calling test on error.
 inline void runAndResumeFromSnapshot2(const std::string& source, const std::filesystem::path& full,
-                                      const std::filesystem::path& cut, int threads = 2) {
+                                      const std::filesystem::path& cut, int threads = 2,
+                                      const std::vector<std::shared_ptr<const PhysicsPackage>>& packages = {}) {
   for (const std::filesystem::path& dir : {full, cut}) {
     RunOptions options;
     options.outDir = dir.string();
     options.sceneSource = source;
     options.threads = threads;
+    options.packages = packages;
     const RunOutcome r = runScene(parseScene(source, "test_blast.toml"), options);
     ASSERT_TRUE(r.ok) << r.error;
   }
@@ -63,6 +65,7 @@ inline void runAndResumeFromSnapshot2(const std::string& source, const std::file
   ASSERT_TRUE(std::filesystem::remove(cut / "snapshots" / "snap_0004.h5"));
   RunOptions options;
   options.threads = threads;
+  options.packages = packages;
   const RunOutcome resumed = restartRun(cut.string(), options);
   ASSERT_TRUE(resumed.ok) << resumed.error;
 }
