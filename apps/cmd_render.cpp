@@ -1,5 +1,5 @@
 // `ejecta render SNAPSHOT.h5|FILE.vdb|RUN_DIR`: a PNG of the particles coloured by a field, or of
-// a grid file: a slice of a grid, or an iso-surface (apps/grid_images.hpp).
+// a grid file: a slice of a grid, or an iso-surface (coupling/grid_images.hpp).
 #include <algorithm>
 #include <array>
 #include <optional>
@@ -10,8 +10,8 @@
 #include <stdexcept>
 
 #include "apps/commands.hpp"
-#include "apps/grid_images.hpp"
-#include "apps/particle_images.hpp"
+#include "coupling/grid_images.hpp"
+#include "coupling/particle_images.hpp"
 #include "fields/grid_slice.hpp"
 #include "sim/io/snapshot.hpp"
 #include "sim/setup/units.hpp"
@@ -19,6 +19,8 @@
 namespace fs = std::filesystem;
 
 namespace ejecta::app {
+
+using namespace ejecta::coupling;  // the in-situ chain (coupling/)
 
 namespace {
 

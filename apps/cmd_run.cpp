@@ -5,8 +5,8 @@
 #include <sstream>
 
 #include "apps/commands.hpp"
-#include "apps/run_images.hpp"
-#include "apps/run_thermal.hpp"
+#include "coupling/run_images.hpp"
+#include "coupling/run_thermal.hpp"
 #include "fields/run_outputs.hpp"
 #include "sim/setup/embedded_scenes.hpp"
 #include "sim/run/run.hpp"
@@ -15,6 +15,8 @@
 namespace fs = std::filesystem;
 
 namespace ejecta::app {
+
+using namespace ejecta::coupling;  // the in-situ chain (coupling/)
 
 namespace {
 

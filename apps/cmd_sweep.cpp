@@ -1,6 +1,6 @@
 // `ejecta sweep SCENE --vary key=v1,v2,...`: runs the variants of a scene as separate `ejecta run`
 // processes (several at once where cores allow), then collects what each coupled into the
-// target into sweep.csv, prints it as a table and charts it as sweep.png (apps/sweep_chart.hpp;
+// target into sweep.csv, prints it as a table and charts it as sweep.png (coupling/sweep_chart.hpp;
 // docs/coupling.md, docs/asteroid_studies.md).
 #include <nlohmann/json.hpp>
 #include <omp.h>
@@ -19,7 +19,7 @@
 #include <stdexcept>
 
 #include "apps/commands.hpp"
-#include "apps/sweep_chart.hpp"
+#include "coupling/sweep_chart.hpp"
 #include "render/charts.hpp"
 #include "sim/io/atomic_file.hpp"
 #include "sim/setup/scene.hpp"
@@ -30,6 +30,8 @@ extern char** environ;
 namespace fs = std::filesystem;
 
 namespace ejecta::app {
+
+using namespace ejecta::coupling;  // the in-situ chain (coupling/)
 
 namespace {
 

@@ -2,9 +2,9 @@
 // [--occlude|--no-occlude] [--occluder-inset VOXELS] [--out DIR] [--json]`: the radiation chain
 // on a run's hot material: flux on every spacecraft patch along the pass, eq. 4.8 face
 // temperatures, transient walls and coating sizing (radiation/thermal_study.hpp,
-// docs/thermal.md). The hot material is the snapshot's particles (apps/snapshot_emitters.hpp) or
-// the grid file's hot voxels (apps/grid_emitters.hpp); the asteroid's surface, meshed from the
-// grid file's level set, occludes (apps/surface_occluder.hpp). Writes flux.csv,
+// docs/thermal.md). The hot material is the snapshot's particles (coupling/snapshot_emitters.hpp) or
+// the grid file's hot voxels (coupling/grid_emitters.hpp); the asteroid's surface, meshed from the
+// grid file's level set, occludes (coupling/surface_occluder.hpp). Writes flux.csv,
 // wall_<patch>.csv, sizing.csv and thermal.json.
 #include <algorithm>
 #include <cstdio>
@@ -14,16 +14,18 @@
 #include <stdexcept>
 
 #include "apps/commands.hpp"
-#include "apps/grid_emitters.hpp"
-#include "apps/snapshot_emitters.hpp"
-#include "apps/surface_occluder.hpp"
-#include "apps/thermal_charts.hpp"
-#include "apps/thermal_outputs.hpp"
+#include "coupling/grid_emitters.hpp"
+#include "coupling/snapshot_emitters.hpp"
+#include "coupling/surface_occluder.hpp"
+#include "coupling/thermal_charts.hpp"
+#include "coupling/thermal_outputs.hpp"
 #include "radiation/thermal_study.hpp"
 #include "sim/run/run.hpp"
 #include "sim/io/snapshot.hpp"
 
 namespace ejecta::app {
+
+using namespace ejecta::coupling;  // the in-situ chain (coupling/)
 
 namespace fs = std::filesystem;
 

@@ -3,10 +3,12 @@
 #include <exception>
 
 #include "apps/commands.hpp"
-#include "apps/verify_charts.hpp"
+#include "coupling/verify_charts.hpp"
 #include "sim/verify/verification.hpp"
 
 namespace ejecta::app {
+
+using namespace ejecta::coupling;  // the in-situ chain (coupling/)
 
 namespace {
 

@@ -7,12 +7,14 @@
 #include <stdexcept>
 
 #include "apps/commands.hpp"
-#include "apps/json_text.hpp"
+#include "coupling/json_text.hpp"
 #include "radiation/whipple_study.hpp"
 #include "render/charts.hpp"
 #include "sim/io/atomic_file.hpp"
 
 namespace ejecta::app {
+
+using namespace ejecta::coupling;  // the in-situ chain (coupling/)
 
 namespace fs = std::filesystem;
 

@@ -25,7 +25,7 @@ struct VerifyArgs {
   std::vector<std::string> overrides;  // applied to the problem's scene
   int resolutions = 0;                 // 0 = the problem's default
   std::string outDir;                  // optional: the profile CSVs, the convergence table and
-                                       // their charts (apps/verify_charts.hpp) go here
+                                       // their charts (coupling/verify_charts.hpp) go here
   bool noCharts = false;               // CSVs only
 };
 int verifyCommand(const VerifyArgs& args);
@@ -77,8 +77,8 @@ struct ThermalArgs {
   bool json = false;                   // print thermal.json to stdout
   std::string emitters;                // particles | voxels; default particles (voxels for a .vdb)
   bool occlude = false, noOcclude = false;  // neither: occlude when the output has a surface grid
-  double occluderInset = 1.5;          // voxels inside the surface (apps/surface_occluder.hpp)
-  bool noCharts = false;               // CSVs only (apps/thermal_charts.hpp)
+  double occluderInset = 1.5;          // voxels inside the surface (coupling/surface_occluder.hpp)
+  bool noCharts = false;               // CSVs only (coupling/thermal_charts.hpp)
 };
 int thermalCommand(const ThermalArgs& args);
 
@@ -96,7 +96,7 @@ struct RenderArgs {
   // vertical field of view [degrees]; no position: the automatic camera.
   std::string cameraPosition, cameraTarget, cameraUp;
   double fovDegrees = 30.0;
-  // Grid files (apps/grid_images.hpp): a slice of `grid` on a plane, or an iso-surface.
+  // Grid files (coupling/grid_images.hpp): a slice of `grid` on a plane, or an iso-surface.
   std::string grid;                    // the grid to slice (default density)
   std::string slice;                   // x | y | z, optionally =VALUE ("z=2.5 m")
   std::string iso;                     // GRID, optionally =VALUE in the grid's units

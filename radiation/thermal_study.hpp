@@ -2,9 +2,9 @@
 // The whole radiation chain for one spacecraft pass (docs/thermal.md): a study file names the
 // spacecraft, its approach trajectory, how hot material is selected and how bright it is, the
 // wall of every face, the structural limit and the candidate coatings. Given the hot material as
-// plain emitter arrays (the caller reads them from a snapshot, apps/snapshot_emitters.hpp, or a
-// grid file, apps/grid_emitters.hpp) and optionally an occluder (the asteroid's surface:
-// apps/surface_occluder.hpp), the chain
+// plain emitter arrays (the caller reads them from a snapshot, coupling/snapshot_emitters.hpp, or a
+// grid file, coupling/grid_emitters.hpp) and optionally an occluder (the asteroid's surface:
+// coupling/surface_occluder.hpp), the chain
 //   1. moves the spacecraft along the trajectory and ray-casts the incident flux on every patch
 //      at each sample time, with its standard error (view_factors.hpp);
 //   2. turns the peak flux into the steady face temperature of the seed's eq. 4.8
@@ -142,7 +142,7 @@ struct ThermalResult {
 ThermalResult runThermalStudy(const ThermalStudy& study, const Emitters& emitters);
 // The same with an occluder (nullptr or empty: none): an opaque triangle mesh, static during the
 // pass like the emitters, that neither emits nor receives: the asteroid's surface (a meshed
-// level set, apps/surface_occluder.hpp). A ray from a patch that meets it before an emitter is
+// level set, coupling/surface_occluder.hpp). A ray from a patch that meets it before an emitter is
 // blocked. Throws MeshError for a malformed mesh.
 ThermalResult runThermalStudy(const ThermalStudy& study, const Emitters& emitters,
                               const TriangleMesh* occluder);
@@ -153,7 +153,7 @@ struct PassFrame {
   const TriangleMesh* occluder = nullptr;
 };
 // The same with material that evolves during the pass: frames[i] at the approach's sample time
-// i (ApproachSpec::times()), as a run captures them while it advances (apps/run_thermal.hpp). The
+// i (ApproachSpec::times()), as a run captures them while it advances (coupling/run_thermal.hpp). The
 // result's emitterCount and groupNames are the largest frame's. Throws ThermalStudyError unless
 // there is one frame per sample time, each with emitters.
 ThermalResult runThermalStudy(const ThermalStudy& study, const std::vector<PassFrame>& frames);

@@ -1,4 +1,4 @@
-// Pictures of grid files through the command line (apps/grid_images.hpp behind `ejecta render
+// Pictures of grid files through the command line (coupling/grid_images.hpp behind `ejecta render
 // FILE.vdb` and `ejecta run`'s [images] grids and surface), checked for what must be true of
 // them: a slice of a step field shows its two colours on the right sides of the step and
 // nothing where the grid is inactive; an iso-surface of a sphere is a disc of the radius the

@@ -133,7 +133,7 @@ TEST(ChainThermal, InSituPassesMatchTheCommandAndThePhysics) {
     const double inSitu = p["peak_flux_W_m2"], fromSnapshot = (*q)["peak_flux_W_m2"];
     EXPECT_NEAR(inSitu, fromSnapshot, 1e-9 * std::max(1.0, std::abs(inSitu))) << p["patch"];
   }
-  // The sizing table pivoted for its chart (apps/thermal_charts.hpp): side0's tungsten row in mm,
+  // The sizing table pivoted for its chart (coupling/thermal_charts.hpp): side0's tungsten row in mm,
   // the same number sizing.csv gives in m ("nan" where the coating cannot protect the face).
   auto side0Row = [](const std::string& csv) {
     std::stringstream row(csv.substr(csv.find("\nside0,") + 1));

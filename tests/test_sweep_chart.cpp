@@ -1,4 +1,4 @@
-// What sweep.png plots (apps/sweep_chart.hpp): the x column chosen from the sweep's axes and the
+// What sweep.png plots (coupling/sweep_chart.hpp): the x column chosen from the sweep's axes and the
 // collected summary values, the tick labels, and when no chart is drawn.
 #include <gtest/gtest.h>
 
@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "apps/sweep_chart.hpp"
+#include "coupling/sweep_chart.hpp"
 
-namespace ejecta::app {
+namespace ejecta::coupling {
 namespace {
 
 using Columns = std::map<std::string, std::vector<std::optional<double>>>;
@@ -112,4 +112,4 @@ TEST(SweepAxes, ValuesSplitOutsideBracketsAndQuotes) {
 }
 
 }  // namespace
-}  // namespace ejecta::app
+}  // namespace ejecta::coupling

@@ -62,7 +62,7 @@ struct ImageOutputOptions {
   // picture 0 when the surface spans it, else the surface's middle.
   std::optional<double> cutAt;
   std::optional<ImageCamera> camera;    // 3D; none: an automatic camera that frames everything
-  // Pictures of the grid files of [fields] (apps/grid_images.hpp), at the outputs both tables'
+  // Pictures of the grid files of [fields] (coupling/grid_images.hpp), at the outputs both tables'
   // cadences select: slices through the plane z = 0 of these grids, images/grid_<name>_NNNN.png,
   // and the surface level set coloured by temperature, images/surface_NNNN.png.
   std::vector<std::string> grids;
@@ -71,7 +71,7 @@ struct ImageOutputOptions {
 
 // [thermal]: the radiation chain (radiation/thermal_study.hpp) run in-situ on the particles at
 // chosen output times: the flux on the spacecraft's faces along its pass, their temperatures and
-// the shield sizing, written to thermal_NNNN/ (apps/run_thermal.hpp, docs/thermal.md).
+// the shield sizing, written to thermal_NNNN/ (coupling/run_thermal.hpp, docs/thermal.md).
 struct ThermalOutputOptions {
   bool enabled = false;                 // the scene has a [thermal] table
   // The study file: a path relative to the scene file's folder, or the name of a study compiled

@@ -1,0 +1,47 @@
+#pragma once
+// Pictures of a run's particles (render/ over sim/'s particles): the view that suits the run's
+// geometry, a field's values with its units, the time. Used by `ejecta render`, by the frames
+// `ejecta run` writes for a scene's [images] table, and under the spacecraft in a thermal pass's
+// picture (coupling/thermal_picture.hpp).
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "render/renderer.hpp"
+#include "sim/state/particles.hpp"
+#include "sim/setup/scene.hpp"
+
+namespace ejecta::coupling {
+
+struct ParticleImageOptions {
+  std::string field = "density";  // a field of sim/state/particle_fields.hpp
+  bool log = false;
+  std::string cut = "z";          // 3D: keep the half with x, y or z <= cutAt ("none": no cut)
+  double cutAt = 0.0;             // [m]
+  std::optional<render::Camera> camera;  // 3D; none: look at everything from above and aside
+  std::string title;              // default: "<scene>: <field>"
+};
+
+// The scene file's [images.camera] as the renderer takes it.
+render::Camera renderCamera(const ImageCamera& camera);
+
+// The layer of the real particles coloured by `options.field`; its values live in `values`,
+// which must outlive the layer's use. Throws std::invalid_argument for an unknown field.
+render::ParticleLayer particleLayer(const ParticleSet& p, Geometry geometry,
+                                    const ParticleImageOptions& options,
+                                    std::vector<double>& values);
+
+// The view that suits the geometry: a plane, RZ mirrored about the axis, or 3D through the
+// options' camera (or an automatic one), cut in half. Throws std::invalid_argument for an unknown
+// cut.
+render::View particleView(Geometry geometry, const ParticleImageOptions& options);
+render::View particleView(Geometry geometry, const std::string& cut);
+
+// Draws the particles and writes the PNG atomically. Throws std::invalid_argument for an
+// unknown field or cut.
+void writeParticleImage(render::Renderer& renderer, const ParticleSet& p, Geometry geometry,
+                        double time, const std::string& sceneName,
+                        const ParticleImageOptions& options, const std::filesystem::path& out);
+
+}  // namespace ejecta::coupling

@@ -1,0 +1,183 @@
+// The scene's [scene], [domain], [sph], [time] and [output] tables.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <string>
+
+#include "sim/setup/scene_sections.hpp"
+
+namespace ejecta::scene_detail {
+
+namespace {
+
+const EnumNames<BoundaryKind> kBoundaryNames{{"open", BoundaryKind::Open},
+                                             {"periodic", BoundaryKind::Periodic},
+                                             {"wall", BoundaryKind::Wall}};
+
+}  // namespace
+
+void readScene(const TableReader& root, Scene& scene) {
+  const toml::table* t = root.optTable("scene");
+  if (!t) root.fail("scene", "required table [scene] is missing");
+  const TableReader r(root.context(), *t, "scene", "scene");
+  scene.name = r.requireString("name");
+  r.check(!scene.name.empty(), "name", "must not be empty");
+  scene.description = r.optString("description").value_or("");
+  const std::string dim = r.requireString("dimension");
+  if (!parseGeometry(dim, scene.geometry))
+    r.fail("dimension", "unknown value '" + dim + "'; allowed: '1d', '2d', 'rz', '3d'");
+}
+
+namespace {
+
+void readAxis(const TableReader& domain, int axis, Geometry geometry, AxisBounds& out) {
+  static constexpr std::string_view kAxisNames[3] = {"x", "y", "z"};
+  const std::string_view name = kAxisNames[axis];
+  const toml::table* t = domain.optTable(name);
+  if (!t) return;  // unbounded and open
+  const int dim = spatialDimension(geometry);
+  if (axis >= dim)
+    domain.fail(name, "axis not used in a " + std::string(geometryName(geometry)) +
+                          " scene (allowed: " + (dim == 1 ? "x" : "x, y") + ")");
+  const bool rAxis = (geometry == Geometry::Axisymmetric && axis == 0);
+  const TableReader r(domain.context(), *t, domain.key(name), "domain." + std::string(name));
+
+  out.min = r.requireQuantity("min", Dimension::Length);
+  out.max = r.requireQuantity("max", Dimension::Length);
+  r.check(out.min < out.max, "max",
+          "max must exceed min (got min " + formatQuantity(out.min, Dimension::Length) + ", max " +
+              formatQuantity(out.max, Dimension::Length) + ")");
+  if (r.has("boundary") && (r.has("lower") || r.has("upper")))
+    r.fail("boundary", "give either 'boundary' or 'lower'/'upper', not both");
+
+  if (rAxis) {
+    r.check(out.min == 0.0, "min", "must be 0 in an rz scene (r starts at the axis)");
+    if (const auto lower = r.optString("lower"))
+      r.check(*lower == "axis", "lower",
+              "the lower r boundary is the axis; write 'axis' or omit it");
+    const std::string_view side = r.has("boundary") ? "boundary" : "upper";
+    out.upper = r.optEnum(side, kBoundaryNames).value_or(BoundaryKind::Open);
+    r.check(out.upper != BoundaryKind::Periodic, side, "r cannot be periodic (r = 0 is the axis)");
+    out.lower = BoundaryKind::Wall;  // the axis: mirror images, as at a wall
+  } else {
+    const auto both = r.optEnum("boundary", kBoundaryNames);
+    out.lower = both ? *both : r.optEnum("lower", kBoundaryNames).value_or(BoundaryKind::Open);
+    out.upper = both ? *both : r.optEnum("upper", kBoundaryNames).value_or(BoundaryKind::Open);
+    if ((out.lower == BoundaryKind::Periodic) != (out.upper == BoundaryKind::Periodic))
+      r.fail(r.has("upper") ? "upper" : "lower", "periodic must be on both sides");
+  }
+  out.bounded = true;
+}
+
+}  // namespace
+
+void readDomain(const TableReader& root, Scene& scene) {
+  const toml::table* t = root.optTable("domain");
+  if (!t) return;
+  const TableReader r(root.context(), *t, "domain", "domain");
+  for (int axis = 0; axis < 3; ++axis) readAxis(r, axis, scene.geometry, scene.domain[axis]);
+}
+
+void readSph(const TableReader& root, SphOptions& sph) {
+  const toml::table* t = root.optTable("sph");
+  if (!t) return;
+  const TableReader r(root.context(), *t, "sph", "sph");
+  const Dimension one = Dimension::None;
+  sph.kernel = r.optEnum<KernelKind>("kernel", {{"cubic_spline", KernelKind::CubicSpline},
+                                                {"wendland_c2", KernelKind::WendlandC2},
+                                                {"wendland_c4", KernelKind::WendlandC4}})
+                   .value_or(sph.kernel);
+  sph.density = r.optEnum<DensityMethod>("density", {{"summation", DensityMethod::Summation},
+                                                     {"continuity", DensityMethod::Continuity}})
+                    .value_or(sph.density);
+  sph.smoothingLength = r.optEnum<SmoothingLengthMethod>(
+                             "smoothing_length", {{"neighbours", SmoothingLengthMethod::Neighbours},
+                                                  {"seed", SmoothingLengthMethod::Seed},
+                                                  {"constant", SmoothingLengthMethod::Constant}})
+                            .value_or(sph.smoothingLength);
+  sph.eta = r.optQuantity("eta", one).value_or(sph.eta);
+  r.check(sph.eta > 0.0, "eta", positiveMessage(sph.eta, one));
+  sph.relaxation = r.optQuantity("relaxation", one).value_or(sph.relaxation);
+  r.check(sph.relaxation > 0.0 && sph.relaxation <= 1.0, "relaxation", "must be in (0, 1]");
+  sph.courant = r.optQuantity("courant", one).value_or(sph.courant);
+  r.check(sph.courant > 0.0 && sph.courant <= 1.0, "courant", "must be in (0, 1]");
+  sph.forceFactor = r.optQuantity("force_factor", one).value_or(sph.forceFactor);
+  r.check(sph.forceFactor > 0.0, "force_factor", positiveMessage(sph.forceFactor, one));
+  sph.hMinFactor = r.optQuantity("h_min_factor", one).value_or(sph.hMinFactor);
+  r.check(sph.hMinFactor >= 0.0 && sph.hMinFactor < 1.0, "h_min_factor", "must be in [0, 1)");
+
+  if (const toml::table* vt = r.optTable("viscosity")) {
+    const TableReader v(root.context(), *vt, "sph.viscosity", "sph.viscosity");
+    sph.alpha = v.optQuantity("alpha", one).value_or(sph.alpha);
+    v.check(sph.alpha >= 0.0, "alpha", nonNegativeMessage(sph.alpha, one));
+    sph.beta = v.optQuantity("beta", one).value_or(sph.beta);
+    v.check(sph.beta >= 0.0, "beta", nonNegativeMessage(sph.beta, one));
+    sph.epsilon = v.optQuantity("epsilon", one).value_or(sph.epsilon);
+    v.check(sph.epsilon > 0.0, "epsilon",
+            positiveMessage(sph.epsilon, one) + "; it keeps the viscosity finite as r -> 0");
+    sph.balsara = v.optBool("balsara").value_or(sph.balsara);
+    sph.viscositySwitch = v.optEnum<ViscositySwitch>(
+                               "switch", {{"none", ViscositySwitch::None},
+                                          {"morris_monaghan", ViscositySwitch::MorrisMonaghan}})
+                              .value_or(sph.viscositySwitch);
+    sph.alphaMin = v.optQuantity("alpha_min", one).value_or(sph.alphaMin);
+    v.check(sph.alphaMin >= 0.0, "alpha_min", nonNegativeMessage(sph.alphaMin, one));
+    v.check(sph.viscositySwitch == ViscositySwitch::None || sph.alphaMin <= sph.alpha,
+            "alpha_min", "must not exceed alpha (the switch keeps alpha_i between them)");
+    sph.alphaDecay = v.optQuantity("decay", one).value_or(sph.alphaDecay);
+    v.check(sph.alphaDecay > 0.0, "decay",
+            positiveMessage(sph.alphaDecay, one) + "; alpha decays over h / (decay c)");
+    sph.viscosityReconstruction =
+        v.optEnum<ViscosityReconstruction>(
+             "reconstruction", {{"none", ViscosityReconstruction::None},
+                                {"van_leer", ViscosityReconstruction::VanLeer},
+                                {"monotone", ViscosityReconstruction::Monotone}})
+            .value_or(sph.viscosityReconstruction);
+  }
+  if (const toml::table* ct = r.optTable("conductivity")) {
+    const TableReader c(root.context(), *ct, "sph.conductivity", "sph.conductivity");
+    sph.conductivity = c.optQuantity("alpha", one).value_or(sph.conductivity);
+    c.check(sph.conductivity >= 0.0, "alpha", nonNegativeMessage(sph.conductivity, one));
+  }
+  sph.form = r.optEnum<MomentumForm>("form", {{"lagrangian", MomentumForm::Lagrangian},
+                                              {"interface", MomentumForm::Interface}})
+                 .value_or(sph.form);
+  if (const toml::table* at = r.optTable("artificial_stress")) {
+    const TableReader a(root.context(), *at, "sph.artificial_stress", "sph.artificial_stress");
+    sph.artificialStress = a.optQuantity("epsilon", one).value_or(sph.artificialStress);
+    a.check(sph.artificialStress >= 0.0, "epsilon",
+            nonNegativeMessage(sph.artificialStress, one) + " (0 switches it off)");
+    sph.artificialStressExponent = a.optQuantity("n", one).value_or(sph.artificialStressExponent);
+    a.check(sph.artificialStressExponent > 0.0, "n",
+            positiveMessage(sph.artificialStressExponent, one));
+  }
+}
+
+void readTime(const TableReader& root, TimeOptions& time) {
+  const toml::table* t = root.optTable("time");
+  if (!t) root.fail("time", "required table [time] is missing (it must give t_end)");
+  const TableReader r(root.context(), *t, "time", "time");
+  const Dimension s = Dimension::Time;
+  time.tEnd = r.requireQuantity("t_end", s);
+  r.check(time.tEnd > 0.0, "t_end", positiveMessage(time.tEnd, s));
+  time.dtMax = r.optQuantity("dt_max", s).value_or(time.dtMax);
+  r.check(time.dtMax >= 0.0, "dt_max", nonNegativeMessage(time.dtMax, s) + "; 0 = unlimited");
+  time.dtMin = r.optQuantity("dt_min", s).value_or(time.dtMin);
+  r.check(time.dtMin >= 0.0, "dt_min", nonNegativeMessage(time.dtMin, s));
+  if (time.dtMax > 0.0) r.check(time.dtMin < time.dtMax, "dt_min", "must be below dt_max");
+  time.maxSteps = r.optInteger("max_steps").value_or(time.maxSteps);
+  r.check(time.maxSteps >= 0, "max_steps", "must not be negative; 0 = unlimited");
+}
+
+void readOutput(const TableReader& root, OutputOptions& out) {
+  const toml::table* t = root.optTable("output");
+  if (!t) return;
+  const TableReader r(root.context(), *t, "output", "output");
+  out.snapshotInterval = r.optQuantity("snapshot_interval", Dimension::Time).value_or(0.0);
+  r.check(out.snapshotInterval >= 0.0, "snapshot_interval",
+          nonNegativeMessage(out.snapshotInterval, Dimension::Time) + "; 0 = first and last only");
+  out.snapshots = r.optBool("snapshots").value_or(out.snapshots);
+}
+
+}  // namespace ejecta::scene_detail

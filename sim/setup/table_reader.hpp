@@ -1,0 +1,266 @@
+#pragma once
+// Typed, checked reading of a TOML document against a schema of allowed keys: every value in SI
+// (numbers or quantity strings, sim/setup/units.hpp), every message "FILE:LINE: key 'a.b':
+// reason" (SceneError). The scene reader's sections (sim/setup/scene_*.cpp) are built on it.
+// Internal to sim/setup/.
+#include <toml++/toml.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "sim/setup/scene_error.hpp"
+#include "sim/setup/units.hpp"
+
+namespace ejecta::scene_detail {
+
+using KeyList = std::vector<std::string_view>;
+// Allowed keys by schema path ("bodies[]" = any element of [[bodies]]).
+using SchemaTables = std::map<std::string_view, KeyList>;
+
+inline bool contains(const KeyList& keys, std::string_view k) {
+  for (std::string_view a : keys)
+    if (a == k || a == "*") return true;
+  return false;
+}
+
+inline std::string joinKeys(const KeyList& keys) {
+  std::string out;
+  for (std::string_view k : keys) out += (out.empty() ? "" : ", ") + std::string(k);
+  return out;
+}
+
+inline std::string typeName(const toml::node& n) {
+  switch (n.type()) {
+    case toml::node_type::table: return "a table";
+    case toml::node_type::array: return "an array";
+    case toml::node_type::string: return "a string";
+    case toml::node_type::integer: return "an integer";
+    case toml::node_type::floating_point: return "a floating-point number";
+    case toml::node_type::boolean: return "a boolean";
+    default: return "a date/time";
+  }
+}
+
+// Enum spellings in scene files.
+template <typename E>
+using EnumNames = std::vector<std::pair<std::string_view, E>>;
+
+template <typename E>
+inline std::string enumList(const EnumNames<E>& names) {
+  std::string out;
+  for (const auto& [name, value] : names)
+    out += (out.empty() ? "'" : ", '") + std::string(name) + "'";
+  return out;
+}
+
+// Where messages point. Values set by --set carry their own source name (see applyOverride).
+class Context {
+ public:
+  Context(std::string sourceName, const toml::table& root, const SchemaTables& schema)
+      : source_(std::move(sourceName)), root_(&root), schema_(&schema) {}
+  const std::string& source() const { return source_; }
+  // The keys allowed in the table at `schemaPath` ("bodies[]" = any element), or nullptr.
+  const KeyList* allowedKeys(std::string_view schemaPath) const {
+    const auto it = schema_->find(schemaPath);
+    return it == schema_->end() ? nullptr : &it->second;
+  }
+
+  std::string where(const toml::node* n) const {
+    if (n && n != root_) {
+      const auto& src = n->source();
+      if (src.path && *src.path != source_) return source_ + ": " + *src.path;
+      if (src.begin.line > 0) return source_ + ":" + std::to_string(src.begin.line);
+    }
+    return source_ + ":1";  // the document itself (e.g. a missing top-level table)
+  }
+
+  [[noreturn]] void fail(const toml::node* at, std::string_view key,
+                         const std::string& reason) const {
+    throw SceneError(where(at) + ": key '" + std::string(key) + "': " + reason);
+  }
+
+ private:
+  std::string source_;
+  const toml::table* root_;
+  const SchemaTables* schema_;
+};
+
+// Typed, checked access to one table of a TOML input. Unknown keys are rejected on construction.
+class TableReader {
+ public:
+  TableReader(const Context& ctx, const toml::table& tbl, std::string path, std::string schema)
+      : ctx_(ctx), tbl_(tbl), path_(std::move(path)) {
+    const KeyList* allowed = ctx_.allowedKeys(schema);
+    for (auto&& [k, v] : tbl_) {
+      if (!allowed || !contains(*allowed, k.str()))
+        ctx_.fail(&v, key(k.str()),
+                  "unknown key; allowed keys here: " + (allowed ? joinKeys(*allowed) : "none"));
+    }
+  }
+
+  const toml::table& table() const { return tbl_; }
+  std::string key(std::string_view k) const {
+    return path_.empty() ? std::string(k) : path_ + "." + std::string(k);
+  }
+  const toml::node* find(std::string_view k) const { return tbl_.get(k); }
+  bool has(std::string_view k) const { return find(k) != nullptr; }
+
+  [[noreturn]] void fail(std::string_view k, const std::string& reason) const {
+    const toml::node* n = find(k);
+    ctx_.fail(n ? n : &tbl_, key(k), reason);
+  }
+  void check(bool ok, std::string_view k, const std::string& reason) const {
+    if (!ok) fail(k, reason);
+  }
+  const toml::node& require(std::string_view k) const {
+    const toml::node* n = find(k);
+    if (!n) ctx_.fail(&tbl_, key(k), "required key is missing");
+    return *n;
+  }
+
+  std::optional<std::string> optString(std::string_view k) const {
+    const toml::node* n = find(k);
+    if (!n) return std::nullopt;
+    if (!n->is_string()) fail(k, "expected a string, got " + typeName(*n));
+    return n->value<std::string>();
+  }
+  std::string requireString(std::string_view k) const {
+    require(k);
+    return *optString(k);
+  }
+
+  std::optional<bool> optBool(std::string_view k) const {
+    const toml::node* n = find(k);
+    if (!n) return std::nullopt;
+    if (!n->is_boolean()) fail(k, "expected true or false, got " + typeName(*n));
+    return n->value<bool>();
+  }
+
+  std::optional<long> optInteger(std::string_view k) const {
+    const toml::node* n = find(k);
+    if (!n) return std::nullopt;
+    if (!n->is_integer()) fail(k, "expected an integer, got " + typeName(*n));
+    return static_cast<long>(*n->value<std::int64_t>());
+  }
+
+  // A number (SI) or a quantity string ("10 km/s") of dimension `dim`.
+  double quantityOf(const toml::node& n, const std::string& fullKey, Dimension dim) const {
+    if (n.is_integer() || n.is_floating_point()) {
+      const double x = *n.value<double>();
+      if (!std::isfinite(x)) ctx_.fail(&n, fullKey, "must be finite");
+      return x;
+    }
+    if (n.is_string()) {
+      try {
+        return parseQuantity(*n.value<std::string>(), dim);
+      } catch (const UnitError& e) {
+        ctx_.fail(&n, fullKey, e.what());
+      }
+    }
+    const std::string unit = siUnit(dim);
+    ctx_.fail(&n, fullKey,
+              "expected " + describeDimension(dim) + " as a number" +
+                  (unit.empty() ? "" : " (SI) or a string such as \"1 " + unit + "\"") + ", got " +
+                  typeName(n));
+  }
+  std::optional<double> optQuantity(std::string_view k, Dimension dim) const {
+    const toml::node* n = find(k);
+    if (!n) return std::nullopt;
+    return quantityOf(*n, key(k), dim);
+  }
+  double requireQuantity(std::string_view k, Dimension dim) const {
+    return quantityOf(require(k), key(k), dim);
+  }
+
+  // A vector with exactly `n` components (the scene's dimension); unused components are 0.
+  std::optional<std::array<double, 3>> optVector(std::string_view k, Dimension dim, int n,
+                                                 std::string_view layout) const {
+    const toml::node* node = find(k);
+    if (!node) return std::nullopt;
+    const toml::array* arr = node->as_array();
+    if (!arr) fail(k, "expected an array " + std::string(layout) + ", got " + typeName(*node));
+    if (static_cast<int>(arr->size()) != n)
+      fail(k, "expected " + std::to_string(n) + " component" + (n == 1 ? "" : "s") + " " +
+                  std::string(layout) + ", got " + std::to_string(arr->size()));
+    std::array<double, 3> out{};
+    for (int i = 0; i < n; ++i)
+      out[i] = quantityOf(*arr->get(static_cast<std::size_t>(i)),
+                          key(k) + "[" + std::to_string(i) + "]", dim);
+    return out;
+  }
+
+  std::optional<std::vector<std::string>> optStringArray(std::string_view k) const {
+    const toml::node* node = find(k);
+    if (!node) return std::nullopt;
+    const toml::array* arr = node->as_array();
+    if (!arr) fail(k, "expected an array of strings, got " + typeName(*node));
+    std::vector<std::string> out;
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      const toml::node* e = arr->get(i);
+      if (!e->is_string())
+        ctx_.fail(e, key(k) + "[" + std::to_string(i) + "]", "expected a string, got " + typeName(*e));
+      out.push_back(*e->value<std::string>());
+    }
+    return out;
+  }
+
+  template <typename E>
+  std::optional<E> optEnum(std::string_view k, const EnumNames<E>& names) const {
+    const std::optional<std::string> text = optString(k);
+    if (!text) return std::nullopt;
+    for (const auto& [name, value] : names)
+      if (name == *text) return value;
+    fail(k, "unknown value '" + *text + "'; allowed: " + enumList(names));
+  }
+
+  const toml::table* optTable(std::string_view k) const {
+    const toml::node* n = find(k);
+    if (!n) return nullptr;
+    if (!n->is_table()) fail(k, "expected a table, got " + typeName(*n));
+    return n->as_table();
+  }
+
+  // An array of tables ([[k]]); each element is returned with its index.
+  std::vector<const toml::table*> tableArray(std::string_view k) const {
+    std::vector<const toml::table*> out;
+    const toml::node* n = find(k);
+    if (!n) return out;
+    const toml::array* arr = n->as_array();
+    if (!arr)
+      fail(k, "expected an array of tables ([[" + std::string(k) + "]]), got " + typeName(*n));
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      const toml::node* e = arr->get(i);
+      if (!e->is_table())
+        ctx_.fail(e, key(k) + "[" + std::to_string(i) + "]",
+                  "expected a table, got " + typeName(*e));
+      out.push_back(e->as_table());
+    }
+    return out;
+  }
+
+  const Context& context() const { return ctx_; }
+
+ private:
+  const Context& ctx_;
+  const toml::table& tbl_;
+  std::string path_;
+};
+
+// The line a node starts on in its file.
+inline int lineOf(const toml::node& n) { return static_cast<int>(n.source().begin.line); }
+
+inline std::string positiveMessage(double v, Dimension d) {
+  return "must be positive (got " + formatQuantity(v, d) + ")";
+}
+inline std::string nonNegativeMessage(double v, Dimension d) {
+  return "must not be negative (got " + formatQuantity(v, d) + ")";
+}
+
+}  // namespace ejecta::scene_detail
