@@ -10,179 +10,14 @@
 #include <vector>
 
 #include "sim/io/atomic_file.hpp"
+#include "sim/io/hdf5_io.hpp"
 #include "sim/state/builtin_fields.hpp"
 
 namespace ejecta {
 
 namespace {
 
-// ---------------------------------------------------------------------------------------------
-// HDF5 plumbing: handle ownership and error reporting.
-// ---------------------------------------------------------------------------------------------
-
-// Owns one HDF5 identifier and closes it with the matching H5?close.
-class Hid {
- public:
-  using Closer = herr_t (*)(hid_t);
-  Hid(hid_t id, Closer closer) : id_(id), closer_(closer) {}
-  Hid(Hid&& other) noexcept
-      : id_(std::exchange(other.id_, H5I_INVALID_HID)), closer_(other.closer_) {}
-  Hid& operator=(Hid&&) = delete;
-  Hid(const Hid&) = delete;
-  Hid& operator=(const Hid&) = delete;
-  ~Hid() { close(); }
-
-  hid_t get() const { return id_; }
-  // Closes now; the result lets callers check closes whose failure matters (the file).
-  herr_t close() { return id_ >= 0 ? closer_(std::exchange(id_, H5I_INVALID_HID)) : 0; }
-
- private:
-  hid_t id_;
-  Closer closer_;
-};
-
-// The root cause recorded on HDF5's error stack by the call that just failed.
-std::string hdf5Detail() {
-  std::string detail;
-  auto innermost = [](unsigned, const H5E_error2_t* err, void* out) -> herr_t {
-    auto& text = *static_cast<std::string*>(out);
-    if (text.empty() && err->desc != nullptr) text = err->desc;
-    return 0;
-  };
-  H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, innermost, &detail);
-  return detail.empty() ? std::string() : " (" + detail + ")";
-}
-
-// HDF5 prints its whole error stack to stderr by default; we report through exceptions instead,
-// so printing is switched off while a snapshot is read or written and restored afterwards.
-class QuietHdf5Errors {
- public:
-  QuietHdf5Errors() {
-    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  }
-  ~QuietHdf5Errors() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
-  QuietHdf5Errors(const QuietHdf5Errors&) = delete;
-  QuietHdf5Errors& operator=(const QuietHdf5Errors&) = delete;
-
- private:
-  H5E_auto2_t func_ = nullptr;
-  void* data_ = nullptr;
-};
-
-[[noreturn]] void failHdf5(const std::string& what) {
-  throw std::runtime_error(what + hdf5Detail());
-}
-
-Hid checked(hid_t id, Hid::Closer closer, const std::string& what) {
-  if (id < 0) failHdf5(what);
-  return Hid(id, closer);
-}
-
-void check(herr_t rc, const std::string& what) {
-  if (rc < 0) failHdf5(what);
-}
-
-// Memory type, file type and type class for each stored element type.
-template <typename T> struct H5Type;
-template <> struct H5Type<double> {
-  static hid_t memory() { return H5T_NATIVE_DOUBLE; }
-  static hid_t file() { return H5T_IEEE_F64LE; }
-  static constexpr H5T_class_t kClass = H5T_FLOAT;
-};
-template <> struct H5Type<int> {
-  static_assert(sizeof(int) == 4, "material is stored as int32");
-  static hid_t memory() { return H5T_NATIVE_INT; }
-  static hid_t file() { return H5T_STD_I32LE; }
-  static constexpr H5T_class_t kClass = H5T_INTEGER;
-};
-template <> struct H5Type<std::int64_t> {
-  static hid_t memory() { return H5T_NATIVE_INT64; }
-  static hid_t file() { return H5T_STD_I64LE; }
-  static constexpr H5T_class_t kClass = H5T_INTEGER;
-};
-
-// Fixed-length UTF-8 string type holding `text` plus its terminating NUL.
-Hid stringType(const std::string& text) {
-  Hid type = checked(H5Tcopy(H5T_C_S1), H5Tclose, "cannot create string type");
-  check(H5Tset_size(type.get(), text.size() + 1), "cannot size string type");
-  check(H5Tset_strpad(type.get(), H5T_STR_NULLTERM), "cannot set string padding");
-  check(H5Tset_cset(type.get(), H5T_CSET_UTF8), "cannot set string encoding");
-  return type;
-}
-
-Hid scalarSpace() { return checked(H5Screate(H5S_SCALAR), H5Sclose, "cannot create dataspace"); }
-
-// ---------------------------------------------------------------------------------------------
-// Writing
-// ---------------------------------------------------------------------------------------------
-
-void writeStringAttribute(hid_t obj, const char* name, const std::string& value) {
-  const Hid type = stringType(value);
-  const Hid space = scalarSpace();
-  const Hid attr = checked(H5Acreate2(obj, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
-                           H5Aclose, std::string("cannot create attribute '") + name + "'");
-  check(H5Awrite(attr.get(), type.get(), value.c_str()),
-        std::string("cannot write attribute '") + name + "'");
-}
-
-template <typename T>
-void writeNumericAttribute(hid_t obj, const char* name, const T* values, hsize_t count) {
-  const Hid space = count == 1 ? scalarSpace()
-                               : checked(H5Screate_simple(1, &count, nullptr), H5Sclose,
-                                         "cannot create dataspace");
-  const Hid attr =
-      checked(H5Acreate2(obj, name, H5Type<T>::file(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
-              H5Aclose, std::string("cannot create attribute '") + name + "'");
-  check(H5Awrite(attr.get(), H5Type<T>::memory(), values),
-        std::string("cannot write attribute '") + name + "'");
-}
-
-template <typename T>
-void writeScalarAttribute(hid_t obj, const char* name, T value) {
-  writeNumericAttribute(obj, name, &value, 1);
-}
-
-struct DatasetSpec {
-  const char* name;
-  const char* units;
-  const char* description;
-};
-
-// Creates dataset spec.name in `group` with shape (n) or (n, 3), writes `data` (n or 3n values,
-// row-major) and tags it with `units` and `description`.
-template <typename T>
-void writeDataset(hid_t group, const DatasetSpec& spec, std::size_t n, bool vector3,
-                  const T* data, hsize_t columns = 3) {
-  const hsize_t dims[2] = {static_cast<hsize_t>(n), columns};
-  const Hid space = checked(H5Screate_simple(vector3 ? 2 : 1, dims, nullptr), H5Sclose,
-                            "cannot create dataspace");
-  const std::string label = std::string("dataset '") + spec.name + "'";
-  const Hid dset = checked(H5Dcreate2(group, spec.name, H5Type<T>::file(), space.get(),
-                                      H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                           H5Dclose, "cannot create " + label);
-  // An empty vector's data() may be null, which H5Dwrite rejects; nothing to write anyway.
-  if (n > 0)
-    check(H5Dwrite(dset.get(), H5Type<T>::memory(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data),
-          "cannot write " + label);
-  writeStringAttribute(dset.get(), "units", spec.units);
-  writeStringAttribute(dset.get(), "description", spec.description);
-}
-
-template <typename T>
-void requireSize(const std::vector<T>& values, std::size_t n, const char* name) {
-  if (values.size() < n)
-    throw std::runtime_error(std::string("particle array for '") + name + "' has " +
-                             std::to_string(values.size()) + " entries, fewer than the " +
-                             std::to_string(n) + " real particles");
-}
-
-template <typename T>
-void writeScalarField(hid_t group, const DatasetSpec& spec, const std::vector<T>& values,
-                      std::size_t n) {
-  requireSize(values, n, spec.name);
-  writeDataset(group, spec, n, false, values.data());
-}
+using namespace hdf5;
 
 // Writes field f of the real particles as dataset f.spec.name in `group`: shape (n) for a scalar,
 // (n, components) otherwise, row-major; components beyond the geometry's dimension as zero when
@@ -223,10 +58,6 @@ void writeFields(hid_t group, const ParticleSet& p, FieldOutput output, Geometry
     if (f.spec.output == output) writeField(group, p, f, geometry);
 }
 
-Hid createGroup(hid_t file, const char* name) {
-  return checked(H5Gcreate2(file, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
-                 std::string("cannot create group '") + name + "'");
-}
 
 void writeRootAttributes(hid_t file, const SnapshotInfo& info) {
   writeScalarAttribute(file, "time", info.time);
@@ -242,18 +73,6 @@ void writeParticles(hid_t file, const ParticleSet& p, Geometry geometry) {
   writeFields(group.get(), p, FieldOutput::Particles, geometry);
 }
 
-void writeStringDataset(hid_t group, const char* name, const std::string& text,
-                        const char* description) {
-  const Hid type = stringType(text);
-  const Hid space = scalarSpace();
-  const Hid dset = checked(H5Dcreate2(group, name, type.get(), space.get(), H5P_DEFAULT,
-                                      H5P_DEFAULT, H5P_DEFAULT),
-                           H5Dclose, std::string("cannot create dataset '") + name + "'");
-  check(H5Dwrite(dset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, text.c_str()),
-        std::string("cannot write dataset '") + name + "'");
-  writeStringAttribute(dset.get(), "units", "1");
-  writeStringAttribute(dset.get(), "description", description);
-}
 
 void writeRestart(hid_t file, const ParticleSet& p, const SnapshotInfo& info) {
   const Hid group = createGroup(file, "/restart");
@@ -287,78 +106,6 @@ void writeSnapshotFile(const std::filesystem::path& tempPath, const ParticleSet&
   check(file.close(), "cannot close temporary file '" + tempPath.string() + "'");
 }
 
-// ---------------------------------------------------------------------------------------------
-// Reading
-// ---------------------------------------------------------------------------------------------
-
-// True if every component of the absolute path `/a/b/c` exists (H5Lexists needs the parents).
-bool linkExists(hid_t file, const std::string& path) {
-  for (std::size_t slash = path.find('/', 1);; slash = path.find('/', slash + 1)) {
-    const std::string prefix = path.substr(0, slash);
-    const htri_t exists = H5Lexists(file, prefix.c_str(), H5P_DEFAULT);
-    if (exists < 0) failHdf5("cannot look up '" + prefix + "'");
-    if (exists == 0) return false;
-    if (slash == std::string::npos) return true;
-  }
-}
-
-Hid openDataset(hid_t file, const std::string& path) {
-  if (!linkExists(file, path)) throw std::runtime_error("missing dataset '" + path + "'");
-  return checked(H5Dopen2(file, path.c_str(), H5P_DEFAULT), H5Dclose,
-                 "cannot open dataset '" + path + "'");
-}
-
-Hid openGroup(hid_t file, const std::string& path) {
-  if (!linkExists(file, path)) throw std::runtime_error("missing group '" + path + "'");
-  return checked(H5Gopen2(file, path.c_str(), H5P_DEFAULT), H5Gclose,
-                 "cannot open group '" + path + "'");
-}
-
-std::vector<hsize_t> datasetShape(hid_t dset, const std::string& path) {
-  const Hid space = checked(H5Dget_space(dset), H5Sclose, "cannot get dataspace of '" + path + "'");
-  const int rank = H5Sget_simple_extent_ndims(space.get());
-  if (rank < 0) failHdf5("cannot get rank of '" + path + "'");
-  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
-  if (rank > 0 && H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr) < 0)
-    failHdf5("cannot get shape of '" + path + "'");
-  return dims;
-}
-
-std::string shapeText(const std::vector<hsize_t>& dims) {
-  std::string text = "(";
-  for (std::size_t i = 0; i < dims.size(); ++i)
-    text += (i ? ", " : "") + std::to_string(dims[i]);
-  return text + ")";
-}
-
-template <typename T>
-void requireClass(hid_t type, const std::string& label) {
-  if (H5Tget_class(type) != H5Type<T>::kClass)
-    throw std::runtime_error(label + " has the wrong element type (expected " +
-                             (H5Type<T>::kClass == H5T_FLOAT ? "floating point" : "integer") +
-                             ")");
-}
-
-// Reads dataset `path` that must have shape (n) or, for vector3, (n, 3).
-template <typename T>
-std::vector<T> readDataset(hid_t file, const std::string& path, std::size_t n, bool vector3,
-                           hsize_t columns = 3) {
-  const Hid dset = openDataset(file, path);
-  const std::vector<hsize_t> dims = datasetShape(dset.get(), path);
-  const std::vector<hsize_t> expected =
-      vector3 ? std::vector<hsize_t>{n, columns} : std::vector<hsize_t>{n};
-  if (dims != expected)
-    throw std::runtime_error("dataset '" + path + "' has shape " + shapeText(dims) +
-                             ", expected " + shapeText(expected));
-  const Hid type = checked(H5Dget_type(dset.get()), H5Tclose, "cannot get type of '" + path + "'");
-  requireClass<T>(type.get(), "dataset '" + path + "'");
-  std::vector<T> values(vector3 ? columns * n : n);
-  if (!values.empty())
-    check(H5Dread(dset.get(), H5Type<T>::memory(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
-          "cannot read dataset '" + path + "'");
-  return values;
-}
-
 std::size_t particleCount(hid_t file) {
   const std::string path = "/particles/position";
   const Hid dset = openDataset(file, path);
@@ -367,92 +114,6 @@ std::size_t particleCount(hid_t file) {
     throw std::runtime_error("dataset '" + path + "' has shape " + shapeText(dims) +
                              ", expected (N, 3)");
   return static_cast<std::size_t>(dims[0]);
-}
-
-// Reads a string stored with either fixed or variable length (files touched by h5py or other
-// tools may use the latter). `read(memType, buffer)` performs the H5Aread/H5Dread.
-template <typename ReadFn>
-std::string readString(hid_t storedType, const std::string& label, ReadFn read) {
-  if (H5Tget_class(storedType) != H5T_STRING)
-    throw std::runtime_error(label + " is not a string");
-  const htri_t variable = H5Tis_variable_str(storedType);
-  if (variable < 0) failHdf5("cannot inspect type of " + label);
-  const Hid memType = checked(H5Tcopy(H5T_C_S1), H5Tclose, "cannot create string type");
-  // HDF5 does not convert between character sets, so read in the stored one.
-  const H5T_cset_t cset = H5Tget_cset(storedType);
-  if (cset < 0) failHdf5("cannot get character set of " + label);
-  check(H5Tset_cset(memType.get(), cset), "cannot set string encoding");
-  if (variable > 0) {
-    check(H5Tset_size(memType.get(), H5T_VARIABLE), "cannot size string type");
-    char* buffer = nullptr;
-    check(read(memType.get(), static_cast<void*>(&buffer)), "cannot read " + label);
-    std::string text = buffer ? buffer : "";
-    H5free_memory(buffer);
-    return text;
-  }
-  const std::size_t size = H5Tget_size(storedType);
-  if (size == 0) failHdf5("cannot get size of " + label);
-  check(H5Tset_size(memType.get(), size), "cannot size string type");
-  std::string buffer(size, '\0');
-  check(read(memType.get(), static_cast<void*>(buffer.data())), "cannot read " + label);
-  return buffer.substr(0, buffer.find('\0'));
-}
-
-Hid openAttribute(hid_t obj, const char* name, const std::string& owner) {
-  const std::string label = std::string("attribute '") + name + "' of " + owner;
-  const htri_t exists = H5Aexists(obj, name);
-  if (exists < 0) failHdf5("cannot look up " + label);
-  if (exists == 0) throw std::runtime_error("missing " + label);
-  return checked(H5Aopen(obj, name, H5P_DEFAULT), H5Aclose, "cannot open " + label);
-}
-
-std::string readStringAttribute(hid_t obj, const char* name, const std::string& owner) {
-  const Hid attr = openAttribute(obj, name, owner);
-  const Hid type = checked(H5Aget_type(attr.get()), H5Tclose, "cannot get attribute type");
-  const std::string label = std::string("attribute '") + name + "' of " + owner;
-  return readString(type.get(), label, [&attr](hid_t mem, void* buf) {
-    return H5Aread(attr.get(), mem, buf);
-  });
-}
-
-template <typename T>
-std::vector<T> readNumericAttribute(hid_t obj, const char* name, const std::string& owner,
-                                    std::size_t count) {
-  const Hid attr = openAttribute(obj, name, owner);
-  const std::string label = std::string("attribute '") + name + "' of " + owner;
-  const Hid type = checked(H5Aget_type(attr.get()), H5Tclose, "cannot get type of " + label);
-  requireClass<T>(type.get(), label);
-  const Hid space = checked(H5Aget_space(attr.get()), H5Sclose, "cannot get space of " + label);
-  const hssize_t points = H5Sget_simple_extent_npoints(space.get());
-  if (points != static_cast<hssize_t>(count))
-    throw std::runtime_error(label + " has " + std::to_string(points) + " values, expected " +
-                             std::to_string(count));
-  std::vector<T> values(count);
-  check(H5Aread(attr.get(), H5Type<T>::memory(), values.data()), "cannot read " + label);
-  return values;
-}
-
-// An attribute of any length that older files may lack (then empty).
-std::vector<double> readOptionalArrayAttribute(hid_t obj, const char* name, const std::string& owner) {
-  const htri_t exists = H5Aexists(obj, name);
-  if (exists <= 0) return {};
-  const Hid attr = openAttribute(obj, name, owner);
-  const Hid space = checked(H5Aget_space(attr.get()), H5Sclose, "cannot get the space of " + std::string(name));
-  const hssize_t points = H5Sget_simple_extent_npoints(space.get());
-  return readNumericAttribute<double>(obj, name, owner, static_cast<std::size_t>(points));
-}
-
-template <typename T>
-T readScalarAttribute(hid_t obj, const char* name, const std::string& owner) {
-  return readNumericAttribute<T>(obj, name, owner, 1)[0];
-}
-
-std::string readStringDataset(hid_t file, const std::string& path) {
-  const Hid dset = openDataset(file, path);
-  const Hid type = checked(H5Dget_type(dset.get()), H5Tclose, "cannot get type of '" + path + "'");
-  return readString(type.get(), "dataset '" + path + "'", [&dset](hid_t mem, void* buf) {
-    return H5Dread(dset.get(), mem, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf);
-  });
 }
 
 void readRootAttributes(hid_t file, SnapshotInfo& info) {
