@@ -14,6 +14,7 @@
 #include "sim/io/xdmf.hpp"
 #include "sim/run/physics_package.hpp"
 #include "sim/run/run.hpp"
+#include "sim/sph/boundaries.hpp"
 #include "sim/state/builtin_fields.hpp"
 #include "sim/state/particle_fields.hpp"
 #include "support/command_line.hpp"
@@ -187,4 +188,47 @@ TEST(FieldRegistry, GridsAndTheXdmfComeFromTheDeclarations) {
   EXPECT_EQ(attributes.front().name, "density");
   EXPECT_EQ(attributes.back().name, "velocity");
   EXPECT_EQ(attributes.back().components, 3);
+}
+
+TEST(FieldRegistry, GhostsCarryHaloFieldsThroughTheirMirrorParity) {
+  // A package's vector and tensor fields reach the ghosts as the built-in ones do: at the x = 0
+  // wall a vector's x component and a tensor's xy component change sign, the rest are copied.
+  DomainBounds domain{};
+  domain[0] = {0.0, 1.0, BoundaryKind::Wall, BoundaryKind::Wall, true};
+  domain[1] = {0.0, 1.0, BoundaryKind::Periodic, BoundaryKind::Periodic, true};
+  ParticleSet p;
+  p.append({0.02, 0.5, 0}, {0, 0, 0}, 1, 1, 1, 0.02, 0);
+  FieldSpec vec;
+  vec.name = "package_vector";
+  vec.components = 3;
+  vec.halo = true;
+  vec.parity = MirrorParity::Vector;
+  p.declare(vec);
+  FieldSpec tensor;
+  tensor.name = "package_tensor";
+  tensor.components = 4;  // xx, yy, zz, xy
+  tensor.halo = true;
+  tensor.parity = MirrorParity::SymmetricTensor;
+  p.declare(tensor);
+  FieldSpec local;
+  local.name = "package_local";  // not read from neighbours: ghosts do not carry it
+  local.fill = 0.0;
+  p.declare(local);
+  for (int c = 0; c < 3; ++c) p.column(*p.field("package_vector"), c)[0] = 1.0 + c;
+  for (int c = 0; c < 4; ++c) p.column(*p.field("package_tensor"), c)[0] = 10.0 + c;
+  p.column(*p.field("package_local"), 0)[0] = 5.0;
+  Boundaries b(Geometry::Planar, domain);
+  b.makeGhosts(p, 2.0);
+  ASSERT_EQ(p.numGhosts(), 1u);
+  const std::size_t g = p.numReal;
+  EXPECT_EQ(p.x[0][g], -0.02);
+  EXPECT_EQ(p.column(*p.field("package_vector"), 0)[g], -1.0);
+  EXPECT_EQ(p.column(*p.field("package_vector"), 1)[g], 2.0);
+  EXPECT_EQ(p.column(*p.field("package_tensor"), 0)[g], 10.0);
+  EXPECT_EQ(p.column(*p.field("package_tensor"), 3)[g], -13.0);
+  EXPECT_EQ(p.column(*p.field("package_local"), 0)[g], 0.0);
+  // A refresh after the source changed.
+  p.column(*p.field("package_vector"), 0)[0] = -4.0;
+  b.refreshGhosts(p);
+  EXPECT_EQ(p.column(*p.field("package_vector"), 0)[g], 4.0);
 }

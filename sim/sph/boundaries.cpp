@@ -7,6 +7,42 @@
 
 namespace ejecta {
 
+namespace {
+
+// The fields a ghost carries: those the pair passes read from neighbours (FieldSpec::halo),
+// positions apart (an image is placed by its face).
+std::vector<const Field*> haloFields(const ParticleSet& p) {
+  std::vector<const Field*> out;
+  for (const Field& f : p.fields())
+    if (f.spec.halo && f.spec.name != "position" && f.storage.kind != FieldStorage::Kind::Derived)
+      out.push_back(&f);
+  return out;
+}
+
+// Copies the halo fields of particle `from` to `to` as seen through mirrors across the axes set
+// in `flips`: a vector's component along a reflected axis changes sign, and so does a symmetric
+// tensor's component that pairs a reflected axis with one that is not.
+void copyHaloFields(ParticleSet& p, const std::vector<const Field*>& halo, std::size_t from,
+                    std::size_t to, std::uint8_t flips) {
+  for (const Field* f : halo) {
+    switch (f->storage.kind) {
+      case FieldStorage::Kind::Int32: (p.*f->storage.int32)[to] = (p.*f->storage.int32)[from]; continue;
+      case FieldStorage::Kind::Int64: (p.*f->storage.int64)[to] = (p.*f->storage.int64)[from]; continue;
+      default: break;
+    }
+    for (int c = 0; c < f->spec.components; ++c) {
+      std::vector<double>& column = p.column(*f, c);
+      bool flip = false;
+      if (f->spec.parity == MirrorParity::Vector) flip = ((flips >> c) & 1u) != 0;
+      if (f->spec.parity == MirrorParity::SymmetricTensor)
+        flip = (((flips >> kSymRow[c]) ^ (flips >> kSymCol[c])) & 1u) != 0;
+      column[to] = flip ? -column[from] : column[from];
+    }
+  }
+}
+
+}  // namespace
+
 
 Boundaries::Boundaries(Geometry geometry, const DomainBounds& domain)
     : geometry_(geometry), dim_(spatialDimension(geometry)), domain_(domain) {
@@ -80,22 +116,22 @@ void Boundaries::makeGhosts(ParticleSet& p, double supportFactor) const {
     p.resize(first + images.size());
     p.ghostSource.resize(p.numGhosts());
     flips_.resize(p.numGhosts());
+    const std::vector<const Field*> halo = haloFields(p);
 #pragma omp parallel for schedule(static)
     for (std::size_t k = 0; k < images.size(); ++k) {
       const std::size_t i = images[k], g = first + k;
       const std::size_t source = i < p.numReal ? i : p.ghostSource[i - p.numReal];
       std::uint8_t flips = i < p.numReal ? 0 : flips_[i - p.numReal];
-      // Copy everything from particle i (itself possibly a ghost), then transform.
-      for (int c = 0; c < 3; ++c) { p.x[c][g] = p.x[c][i]; p.v[c][g] = p.v[c][i]; }
-      p.mass[g] = p.mass[i]; p.rho[g] = p.rho[i]; p.u[g] = p.u[i]; p.h[g] = p.h[i];
-      p.material[g] = p.material[i]; p.id[g] = p.id[i]; p.P[g] = p.P[i]; p.cs[g] = p.cs[i];
-      p.omega[g] = p.omega[i]; p.areaDensity[g] = p.areaDensity[i];
+      // Copy the halo fields from particle i (itself possibly a ghost) through this face's
+      // mirror, then place the image.
+      const std::uint8_t faceFlip = face.periodic ? 0 : static_cast<std::uint8_t>(1u << d);
+      copyHaloFields(p, halo, i, g, faceFlip);
+      for (int c = 0; c < 3; ++c) p.x[c][g] = p.x[c][i];
       if (face.periodic) {
         p.x[d][g] += face.upper ? -face.period : face.period;
       } else {
         p.x[d][g] = 2.0 * face.position - p.x[d][i];
-        p.v[d][g] = -p.v[d][i];
-        flips ^= static_cast<std::uint8_t>(1u << d);
+        flips ^= faceFlip;
       }
       p.ghostSource[g - p.numReal] = source;
       flips_[g - p.numReal] = flips;
@@ -104,20 +140,10 @@ void Boundaries::makeGhosts(ParticleSet& p, double supportFactor) const {
 }
 
 void Boundaries::refreshGhosts(ParticleSet& p) const {
+  const std::vector<const Field*> halo = haloFields(p);
   const std::size_t nReal = p.numReal;
-  for (std::size_t g = 0; g < p.numGhosts(); ++g) {
-    const std::size_t i = nReal + g, s = p.ghostSource[g];
-    for (int k = 0; k < 3; ++k) p.v[k][i] = (flips_[g] >> k) & 1u ? -p.v[k][s] : p.v[k][s];
-    p.rho[i] = p.rho[s]; p.u[i] = p.u[s]; p.h[i] = p.h[s]; p.P[i] = p.P[s]; p.cs[i] = p.cs[s];
-    p.omega[i] = p.omega[s]; p.areaDensity[i] = p.areaDensity[s];
-    p.divv[i] = p.divv[s]; p.curlv[i] = p.curlv[s];
-    // A mirror reverses the shear components that pair a reflected axis with one that is not.
-    for (int c = 0; c < p.stressComponents(); ++c) {
-      const bool flip = (((flips_[g] >> kSymRow[c]) ^ (flips_[g] >> kSymCol[c])) & 1u) != 0;
-      p.stress[c][i] = flip ? -p.stress[c][s] : p.stress[c][s];
-    }
-    if (p.hasFracture()) p.crack[i] = p.crack[s];
-  }
+  for (std::size_t g = 0; g < p.numGhosts(); ++g)
+    copyHaloFields(p, halo, p.ghostSource[g], nReal + g, flips_[g]);
 }
 
 void Boundaries::refreshGhostTensor(const ParticleSet& p, std::vector<double>& tensor) const {
