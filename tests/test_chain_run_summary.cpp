@@ -3,7 +3,8 @@
 // fields/crater_summary.hpp) and summary.json from their one serialisation, so every printed
 // number must read, at its printed precision, what summary.json holds under its key. A tiny RZ
 // impact with a device going off in the target and a gauge between them prints the energy, the
-// crater, the source, the coupling and the gauge lines.
+// crater, the source, the coupling and the gauge lines; the same impact with a spacecraft passing
+// over the crater (apps/run_thermal.hpp, apps/thermal_summary.hpp) prints the thermal lines.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -54,6 +55,32 @@ energy = "1 MJ"
 [[gauges]]
 name = "g1"
 position = [0.0, "-0.2 m"]
+)";
+
+// The study of tests/test_chain_thermal.cpp: a 0.1 m box coming down the axis over the crater,
+// the threshold lowered to 500 K to have emitters, fixed ray counts.
+const char* kStudy = R"(
+[study]
+name = "small_follower"
+[spacecraft]
+shape = "box"
+size = [0.1, 0.1, 0.1]
+[approach]
+target = [0.0, 0.0, 0.0]
+distance = "0.3 m"
+direction = [0.0, 1.0, 0.0]
+speed = "150 m/s"
+duration = "1 ms"
+samples = 3
+[emitters]
+min_temperature = 500.0
+[[walls]]
+layers = [{ material = "aluminium", thickness = "1 mm", cells = 10 }]
+[sizing]
+coatings = ["tungsten"]
+patches = ["side0"]
+[sampling]
+rays = 65536
 )";
 
 // A printed value: the summary.json entry it shows, the factor it is printed with and its format.
@@ -148,6 +175,54 @@ TEST(RunSummaryPrinted, EveryPrintedNumberIsTheOneInSummaryJson) {
     }
   }
   expectLine(out, gauge, gaugeValues);
+  fs::remove_all(dir);
+}
+
+TEST(RunSummaryPrinted, ThermalLinesAreTheOnesInSummaryJson) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("ejecta_chain_run_thermal_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  writeTextFile(dir / "small_follower.toml", kStudy);
+  ejecta::test::TinyImpact impact;
+  impact.extra = "[fields]\ngrids = [\"density\", \"temperature\", \"fractions\"]\n"
+                 "[thermal]\nstudy = \"small_follower.toml\"\ntimes = [\"30 us\", \"60 us\"]\n";
+  writeTextFile(dir / "scene.toml", ejecta::test::tinyImpactScene(impact));
+  std::string out;
+  ASSERT_EQ(runCommand(kEjecta + " run " + (dir / "scene.toml").string() +
+                           " --quiet --no-charts --threads 2 --out " + (dir / "out").string(),
+                       out),
+            0)
+      << out;
+  const nlohmann::json j = nlohmann::json::parse(readTextFile(dir / "out" / "summary.json"));
+  const nlohmann::json& x = j.at("extras");
+  const std::string number = "([-+0-9.e]+|nan|inf)";
+  expectLine(out,
+             "spacecraft: the hottest of " + number + " pass\\(es\\), over the rock of t = " +
+                 number + " ms \\(.*; up to " + number + " hot particles -> " + number +
+                 " emitters\\)",
+             {{x.at("thermal_passes"), 1.0, "%.0f"},
+              {x.at("thermal_time_s"), 1e3, "%.3g"},
+              {x.at("thermal_hot_particles"), 1.0, "%.0f"},
+              {x.at("thermal_emitters"), 1.0, "%.0f"}});
+  std::stringstream faces(x.at("thermal_faces").get<std::string>());
+  int rows = 0;
+  for (std::string face; std::getline(faces, face, ',');) {
+    const std::string k = "thermal_" + face;
+    std::vector<Printed> values = {{x.at(k + "_peak_flux_W_m2"), 1.0, "%.3g"},
+                                   {x.at(k + "_steady_K"), 1.0, "%.0f"}};
+    std::string row = "^    " + face + " +" + number + " W/m\\^2 +" + number + " K";
+    if (x.contains(k + "_structure_peak_K")) {
+      row += " +" + number + " K";
+      values.push_back({x.at(k + "_structure_peak_K"), 1.0, "%.0f"});
+    }
+    expectLine(out, row + "$", values);
+    ++rows;
+  }
+  EXPECT_GT(rows, 1);
+  EXPECT_NE(out.find("  shield: " + x.at("thermal_shield").get<std::string>() + "\n"),
+            std::string::npos)
+      << out;
   fs::remove_all(dir);
 }
 
