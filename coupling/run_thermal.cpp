@@ -129,29 +129,24 @@ std::string recommendation(const radiation::ThermalResult& r) {
   return best + " " + fixed(bestThickness * 1e3, 3) + " mm, +" + fixed(bestMass, 2) + " kg";
 }
 
-void addSummary(const Pass& pass, const std::string& outDir, RunSummary& summary) {
-  auto& x = summary.extras;
+ThermalSummary::Pass governingSummary(const Pass& pass, const std::string& outDir) {
   const radiation::ThermalResult& r = pass.result;
-  x.push_back({"thermal_time_s", pass.time});
-  x.push_back({"thermal_hot_material", std::string(pass.evolving ? "evolving" : "snapshot")});
-  x.push_back({"thermal_dir", (fs::path(outDir) / pass.dir).string()});
-  x.push_back({"thermal_hot_particles", static_cast<std::int64_t>(pass.stats.hot)});
-  x.push_back({"thermal_emitters", static_cast<std::int64_t>(pass.stats.emitters)});
-  x.push_back({"thermal_occluder_triangles", static_cast<std::int64_t>(pass.occluderTriangles)});
-  std::string faces;
+  ThermalSummary::Pass out;
+  out.time = pass.time;
+  out.evolving = pass.evolving;
+  out.dir = (fs::path(outDir) / pass.dir).string();
+  out.hotParticles = static_cast<std::int64_t>(pass.stats.hot);
+  out.emitters = static_cast<std::int64_t>(pass.stats.emitters);
+  out.occluderTriangles = static_cast<std::int64_t>(pass.occluderTriangles);
   for (const radiation::PatchThermal& p : r.patches) {
-    faces += (faces.empty() ? "" : ",") + p.patch;
-    const std::string k = "thermal_" + p.patch;
-    x.push_back({k + "_peak_flux_W_m2", p.peakFlux});
-    x.push_back({k + "_steady_K", p.steadyTemperature});
-    if (p.wall) x.push_back({k + "_structure_peak_K", p.layerPeak.back()});
+    ThermalSummary::Face face{p.patch, p.peakFlux, p.steadyTemperature, std::nullopt};
+    if (p.wall) face.structurePeak = p.layerPeak.back();
+    out.faces.push_back(std::move(face));
   }
-  x.push_back({"thermal_faces", faces});
-  for (const auto& [coating, mass] : r.totalAddedMass) {
-    x.push_back({"thermal_shield_" + coating + "_mm", thickestCoating(r, coating) * 1e3});
-    x.push_back({"thermal_shield_" + coating + "_kg", mass});
-  }
-  x.push_back({"thermal_shield", recommendation(r)});
+  for (const auto& [coating, mass] : r.totalAddedMass)
+    out.shields.push_back({coating, thickestCoating(r, coating) * 1e3, mass});
+  out.recommendation = recommendation(r);
+  return out;
 }
 
 // A pass that failed: a note for the summary and a line on stderr; the run goes on.
@@ -321,7 +316,8 @@ radiation::ThermalStudy loadSceneThermalStudy(const Scene& scene) {
                  " and no study of that name compiled in (e.g. \"thermal/follower\")"));
 }
 
-void addThermalOutputs(RunOptions& options, const Scene& scene, bool charts) {
+void addThermalOutputs(RunOptions& options, const Scene& scene, bool charts,
+                       std::function<void(const ThermalSummary&)> onThermal) {
   if (!scene.thermal.enabled || options.outDir.empty()) return;
   if (spatialDimension(scene.geometry) < 3 && scene.geometry != Geometry::Axisymmetric)
     throw SceneError(scene.sourcePath + ":" + std::to_string(scene.thermal.line) +
@@ -406,28 +402,29 @@ void addThermalOutputs(RunOptions& options, const Scene& scene, bool charts) {
   options.onFinish = [=](const Simulation& sim, RunSummary& summary) {
     if (previousFinish) previousFinish(sim, summary);
     if (!log->open.empty()) advanceEvolvingPasses(*context, *log, sim, true);
-    summary.extras.push_back({"thermal_passes", static_cast<std::int64_t>(log->passes.size())});
+    ThermalSummary thermal;
+    thermal.passes = static_cast<std::int64_t>(log->passes.size());
     std::string notes;
     for (const std::string& note : log->notes) notes += (notes.empty() ? "" : "; ") + note;
-    if (log->passes.empty()) {
-      if (!notes.empty()) summary.extras.push_back({"thermal_note", notes});
-      return;
-    }
-    const Pass* governing = &log->passes.front();
-    for (const Pass& p : log->passes)
-      if (p.hottestFace > governing->hottestFace) governing = &p;
-    addSummary(*governing, context->outDir.string(), summary);
-    render::ChartRunner chartRunner;
-    for (const Pass& p : log->passes) {
-      if (!context->charts || !chartRunner.chartsAvailable()) break;
-      try {
-        writeThermalCharts(chartRunner, p.result, context->outDir / p.dir, context->sceneName);
-      } catch (const std::exception& e) {
-        notes += (notes.empty() ? "" : "; ") + std::string("thermal charts failed: ") + e.what();
-        break;
+    if (!log->passes.empty()) {
+      const Pass* governing = &log->passes.front();
+      for (const Pass& p : log->passes)
+        if (p.hottestFace > governing->hottestFace) governing = &p;
+      thermal.governing = governingSummary(*governing, context->outDir.string());
+      render::ChartRunner chartRunner;
+      for (const Pass& p : log->passes) {
+        if (!context->charts || !chartRunner.chartsAvailable()) break;
+        try {
+          writeThermalCharts(chartRunner, p.result, context->outDir / p.dir, context->sceneName);
+        } catch (const std::exception& e) {
+          notes += (notes.empty() ? "" : "; ") + std::string("thermal charts failed: ") + e.what();
+          break;
+        }
       }
     }
-    if (!notes.empty()) summary.extras.push_back({"thermal_note", notes});
+    thermal.note = notes;
+    addToSummary(thermal, summary);
+    if (onThermal) onThermal(thermal);
   };
 }
 

@@ -12,8 +12,10 @@
 // governing pass (the one with the hottest steady face): per-face flux and temperatures, the
 // structure's peak, each candidate coating's thickness and mass, and charts of its flux and wall.
 #include <filesystem>
+#include <functional>
 #include <string>
 
+#include "coupling/thermal_summary.hpp"
 #include "radiation/thermal_study.hpp"
 #include "sim/run/run.hpp"
 #include "sim/setup/scene.hpp"
@@ -26,7 +28,9 @@ radiation::ThermalStudy loadSceneThermalStudy(const Scene& scene);
 
 // Adds the passes to the run's outputs. Throws SceneError for a study that cannot be loaded or a
 // geometry without 3D extent (1D, 2D planar), before the run starts.
-// `charts` false: no flux and wall charts (the CSVs are written).
-void addThermalOutputs(RunOptions& options, const Scene& scene, bool charts = true);
+// `charts` false: no flux and wall charts (the CSVs are written). `onThermal`, when given, is
+// called at the end with the result written into the summary.
+void addThermalOutputs(RunOptions& options, const Scene& scene, bool charts = true,
+                       std::function<void(const ThermalSummary&)> onThermal = {});
 
 }  // namespace ejecta::coupling

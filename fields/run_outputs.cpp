@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "fields/crater_history.hpp"
+#include "fields/crater_summary.hpp"
 #include "fields/crater_setup.hpp"
 #include "fields/grid_set.hpp"
 #include "fields/measure_crater.hpp"
@@ -22,30 +23,8 @@ std::string fieldFileName(long snapshotIndex) {
   return buf;
 }
 
-namespace {
-
-void addCraterToSummary(const CraterMetrics& m, bool planar, RunSummary& s) {
-  s.extras.push_back({"crater_found", m.found});
-  if (!m.note.empty()) s.extras.push_back({"crater_note", m.note});
-  if (!m.found) return;
-  s.extras.push_back({"crater_depth_m", m.depth});
-  s.extras.push_back({"crater_apparent_diameter_m", m.apparentDiameter});
-  s.extras.push_back({"crater_rim_diameter_m", m.rimDiameter});
-  s.extras.push_back({"crater_rim_height_m", m.rimHeight});
-  if (planar) {
-    // A planar run's crater is a trench of unit depth: an area and a mass per metre.
-    s.extras.push_back({"crater_area_m2", m.volume});
-    s.extras.push_back({"crater_excavated_mass_kg_per_m", m.excavatedMass});
-  } else {
-    s.extras.push_back({"crater_volume_m3", m.volume});
-    s.extras.push_back({"crater_excavated_mass_kg", m.excavatedMass});
-    s.extras.push_back({"crater_elongation", m.elongation});
-  }
-}
-
-}  // namespace
-
-void addFieldOutputs(RunOptions& options, const Scene& scene) {
+void addFieldOutputs(RunOptions& options, const Scene& scene,
+                     std::function<void(const CraterSummary&)> onCrater) {
   if (options.outDir.empty() || scene.geometry == Geometry::Line) return;
   const std::string outDir = options.outDir;
   const ParticleContext ctx = ParticleContext::fromScene(scene);
@@ -105,12 +84,15 @@ void addFieldOutputs(RunOptions& options, const Scene& scene) {
         const CraterMetrics m = tracking->last && tracking->lastTime == sim.time()
                                     ? *tracking->last
                                     : measureCrater(sim.particles(), ctx, *crater, resolution);
-        addCraterToSummary(m, crater->planar, summary);
+        const CraterSummary c = craterSummary(m, crater->planar);
+        addToSummary(c, summary);
         writeFileAtomically(fs::path(outDir) / "crater_profile.csv", craterProfileCsv(m));
+        if (onCrater) onCrater(c);
       } catch (const std::exception& e) {
         // The run's own results stand; say why the crater is missing.
-        summary.extras.push_back({"crater_found", false});
-        summary.extras.push_back({"crater_note", std::string("crater measurement failed: ") + e.what()});
+        const CraterSummary c = craterFailure(std::string("crater measurement failed: ") + e.what());
+        addToSummary(c, summary);
+        if (onCrater) onCrater(c);
       }
     };
   }

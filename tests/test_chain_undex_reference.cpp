@@ -1,8 +1,9 @@
 // `ejecta undex-reference SCENE`: the converged 1D reference of a centred charge's gauges
-// (apps/cmd_undex_reference.cpp, docs/undex.md), through the command line on tiny scenes: the
-// CSV has the SPH gauges.csv layout and holds what the command prints, the gauges are placed by
-// their distance from the charge, the geometry maps to the right symmetry, and scenes that are
-// not a centred charge in one medium are refused with the file and the key.
+// (apps/cmd_undex_reference.cpp over sim/verify/undex_reference.hpp, docs/undex.md), through the
+// command line on tiny scenes: the CSV has the SPH gauges.csv layout and holds what the command
+// prints, the gauges are placed by their distance from the charge, the geometry maps to the right
+// symmetry, and scenes that are not a centred charge in one medium are refused with the file and
+// the key.
 #include <gtest/gtest.h>
 #include <unistd.h>
 

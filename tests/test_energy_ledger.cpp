@@ -104,6 +104,17 @@ TEST(EnergyLedger, ImpactRunPartitionAddsUpAndSurvivesRestart) {
   // have more than all of it (energy error 2e-4).
   EXPECT_GT(gain / ke0, 0.2);
   EXPECT_LT(gain / ke0, 1.0);
+  // The typed partition the run hands back is what summary.json holds.
+  ASSERT_TRUE(r.ledger.impact.has_value());
+  EXPECT_FALSE(r.ledger.source.has_value());  // no deposit, no detonation
+  EXPECT_EQ(r.ledger.impact->impactorKinetic, ke0);
+  EXPECT_EQ(r.ledger.impact->targetKineticGain, x["target_kinetic_gain_J"].get<double>());
+  ASSERT_TRUE(r.ledger.impact->targetShareOfImpactorEnergy.has_value());
+  EXPECT_EQ(*r.ledger.impact->targetShareOfImpactorEnergy,
+            x["target_share_of_impactor_energy"].get<double>());
+  ASSERT_EQ(r.ledger.materials.size(), 2u);
+  EXPECT_EQ(r.ledger.materials[1].key, "Al_2024");
+  EXPECT_EQ(r.ledger.materials[1].kinetic, x["energy_Al_2024_kinetic_J"].get<double>());
 
   // The t = 0 partition travels in every snapshot, so a restart reports the same reference.
   SnapshotInfo info;

@@ -181,37 +181,30 @@ std::string ledgerKey(const std::string& materialName) {
 
 namespace {
 
-// The source's share of the run: yield, what the target holds of it and how, what the explosive
-// keeps, and where the device sat (the seed's Tables 3.4-3.6 and eq. 3.1).
-void addSourceCoupling(const Scene& scene, const std::vector<double>& initialKinetic,
-                       const std::vector<double>& initialInternal,
-                       const std::vector<ConservedTotals>& now,
-                       const std::vector<DepositFiring>& firings, RunSummary& summary) {
+LedgerSummary::Source sourceCoupling(const Scene& scene, const std::vector<double>& initialKinetic,
+                                     const std::vector<double>& initialInternal,
+                                     const std::vector<ConservedTotals>& now,
+                                     const std::vector<DepositFiring>& firings) {
+  LedgerSummary::Source out;
   const double yield = sourceYield(scene, initialInternal);
-  const bool planar = scene.geometry == Geometry::Planar;
-  summary.extras.push_back({planar ? "yield_J_per_m" : "yield_J", yield});
-  if (!planar) summary.extras.push_back({"yield_kt", yield / kJoulesPerKilotonTnt});
-  // When each deposit fired: t = 0 with the particles, a delayed one at its step (or never).
+  out.yield = yield;
+  out.planar = scene.geometry == Geometry::Planar;
+  if (!out.planar) out.yieldKt = yield / kJoulesPerKilotonTnt;
+  out.dimension = spatialDimension(scene.geometry);
   for (std::size_t k = 0; k < scene.deposits.size(); ++k) {
-    const std::string key = "deposit_" + ledgerKey(scene.deposits[k].name);
+    LedgerSummary::Deposit d;
+    d.key = "deposit_" + ledgerKey(scene.deposits[k].name);
+    d.delayed = scene.deposits[k].time > 0.0;
     const auto f = std::find_if(firings.begin(), firings.end(),
                                 [&](const DepositFiring& x) { return x.deposit == k; });
-    const bool delayed = scene.deposits[k].time > 0.0;
-    summary.extras.push_back({key + "_fired", !delayed || f != firings.end()});
-    if (!delayed) summary.extras.push_back({key + "_fired_time_s", 0.0});
-    if (f == firings.end()) continue;
-    summary.extras.push_back({key + "_fired_time_s", f->time});
-    summary.extras.push_back({key + "_fired_step", static_cast<std::int64_t>(f->step)});
-    const int dim = spatialDimension(scene.geometry);
-    const char* axis[] = {"x", "y", "z"};
-    for (int d = 0; d < dim; ++d)
-      summary.extras.push_back({key + "_point_" + axis[d] + "_m", f->point[static_cast<std::size_t>(d)]});
+    if (f != firings.end()) d.firing = *f;
+    out.deposits.push_back(std::move(d));
   }
   const CouplingReference ref = couplingReference(scene, initialKinetic, initialInternal, firings);
   const DepositFiring* first = sourceFiring(scene, firings);
   const std::vector<double>& kinetic0 = first ? first->kineticBefore : initialKinetic;
   const std::vector<double>& internal0 = first ? first->internalBefore : initialInternal;
-  if (first) summary.extras.push_back({"target_energy_before_source_J", ref.targetInitial});
+  if (first) out.targetEnergyBeforeSource = ref.targetInitial;
   if (ref.isYield && ref.reference > 0.0) {
     double kinetic = 0.0, internal = 0.0;
     for (int m : ref.target) {
@@ -220,57 +213,108 @@ void addSourceCoupling(const Scene& scene, const std::vector<double>& initialKin
       internal += now[k].internal - internal0[k];
     }
     const double gain = kinetic + internal;
-    summary.extras.push_back({"target_share_of_yield", gain / yield});
+    out.targetShareOfYield = gain / yield;
     if (gain != 0.0) {
-      summary.extras.push_back({"target_kinetic_fraction", kinetic / gain});
-      summary.extras.push_back({"target_internal_fraction", internal / gain});
+      out.targetKineticFraction = kinetic / gain;
+      out.targetInternalFraction = internal / gain;
     }
     double explosive = 0.0;
     for (int m : ledgerGroups(scene).explosive) explosive += now[static_cast<std::size_t>(m)].total();
-    summary.extras.push_back({"explosive_share_of_yield", explosive / yield});
+    out.explosiveShareOfYield = explosive / yield;
   }
-  if (const std::optional<double> depth = depthOfBurst(scene, firings)) {
-    summary.extras.push_back({"depth_of_burst_m", *depth});
-    if (!planar && yield > 0.0)
-      summary.extras.push_back(
-          {"scaled_depth_of_burst_m_per_kt3", *depth / std::cbrt(yield / kJoulesPerKilotonTnt)});
+  out.depthOfBurst = depthOfBurst(scene, firings);
+  if (out.depthOfBurst && !out.planar && yield > 0.0)
+    out.scaledDepthOfBurst = *out.depthOfBurst / std::cbrt(yield / kJoulesPerKilotonTnt);
+  return out;
+}
+
+void addToSummary(const LedgerSummary::Source& s, RunSummary& summary) {
+  auto& x = summary.extras;
+  x.push_back({s.planar ? "yield_J_per_m" : "yield_J", s.yield});
+  if (s.yieldKt) x.push_back({"yield_kt", *s.yieldKt});
+  for (const LedgerSummary::Deposit& d : s.deposits) {
+    x.push_back({d.key + "_fired", !d.delayed || d.firing.has_value()});
+    if (!d.delayed) x.push_back({d.key + "_fired_time_s", 0.0});
+    if (!d.firing) continue;
+    x.push_back({d.key + "_fired_time_s", d.firing->time});
+    x.push_back({d.key + "_fired_step", static_cast<std::int64_t>(d.firing->step)});
+    const char* axis[] = {"x", "y", "z"};
+    for (int k = 0; k < s.dimension; ++k)
+      x.push_back({d.key + "_point_" + axis[k] + "_m", d.firing->point[static_cast<std::size_t>(k)]});
   }
+  if (s.targetEnergyBeforeSource)
+    x.push_back({"target_energy_before_source_J", *s.targetEnergyBeforeSource});
+  if (s.targetShareOfYield) x.push_back({"target_share_of_yield", *s.targetShareOfYield});
+  if (s.targetKineticFraction) x.push_back({"target_kinetic_fraction", *s.targetKineticFraction});
+  if (s.targetInternalFraction)
+    x.push_back({"target_internal_fraction", *s.targetInternalFraction});
+  if (s.explosiveShareOfYield) x.push_back({"explosive_share_of_yield", *s.explosiveShareOfYield});
+  if (s.depthOfBurst) x.push_back({"depth_of_burst_m", *s.depthOfBurst});
+  if (s.scaledDepthOfBurst) x.push_back({"scaled_depth_of_burst_m_per_kt3", *s.scaledDepthOfBurst});
 }
 
 }  // namespace
+
+LedgerSummary ledgerSummary(const Scene& scene, const std::vector<double>& initialKinetic,
+                            const std::vector<double>& initialInternal,
+                            const std::vector<ConservedTotals>& now,
+                            const std::vector<DepositFiring>& firings) {
+  LedgerSummary out;
+  const std::size_t n = std::min(scene.materials.size(), now.size());
+  const bool haveInitial = initialKinetic.size() == n && initialInternal.size() == n;
+  for (std::size_t m = 0; m < n; ++m) {
+    LedgerSummary::Material e;
+    e.key = ledgerKey(scene.materials[m].name);
+    if (haveInitial) {
+      e.initialKinetic = initialKinetic[m];
+      e.initialInternal = initialInternal[m];
+    }
+    e.kinetic = now[m].kinetic;
+    e.internal = now[m].internal;
+    out.materials.push_back(std::move(e));
+  }
+  const LedgerGroups g = ledgerGroups(scene);
+  if (haveInitial && (!scene.deposits.empty() || !scene.detonations.empty()))
+    out.source = sourceCoupling(scene, initialKinetic, initialInternal, now, firings);
+  if (!haveInitial || g.impactor.empty() || g.target.empty()) return out;
+  LedgerSummary::Impact impact;
+  for (int m : g.impactor) impact.impactorKinetic += initialKinetic[static_cast<std::size_t>(m)];
+  for (int m : g.target) {
+    const std::size_t k = static_cast<std::size_t>(m);
+    impact.targetKineticGain += now[k].kinetic - initialKinetic[k];
+    impact.targetInternalGain += now[k].internal - initialInternal[k];
+  }
+  if (impact.impactorKinetic > 0.0)
+    impact.targetShareOfImpactorEnergy =
+        (impact.targetKineticGain + impact.targetInternalGain) / impact.impactorKinetic;
+  out.impact = impact;
+  return out;
+}
+
+void addToSummary(const LedgerSummary& ledger, RunSummary& summary) {
+  auto& x = summary.extras;
+  for (const LedgerSummary::Material& m : ledger.materials) {
+    const std::string key = "energy_" + m.key;
+    if (m.initialKinetic) x.push_back({key + "_kinetic_initial_J", *m.initialKinetic});
+    if (m.initialInternal) x.push_back({key + "_internal_initial_J", *m.initialInternal});
+    x.push_back({key + "_kinetic_J", m.kinetic});
+    x.push_back({key + "_internal_J", m.internal});
+  }
+  if (ledger.source) addToSummary(*ledger.source, summary);
+  if (!ledger.impact) return;
+  const LedgerSummary::Impact& i = *ledger.impact;
+  x.push_back({"impactor_kinetic_energy_J", i.impactorKinetic});
+  x.push_back({"target_kinetic_gain_J", i.targetKineticGain});
+  x.push_back({"target_internal_gain_J", i.targetInternalGain});
+  if (i.targetShareOfImpactorEnergy)
+    x.push_back({"target_share_of_impactor_energy", *i.targetShareOfImpactorEnergy});
+}
 
 void addEnergyPartition(const Scene& scene, const std::vector<double>& initialKinetic,
                         const std::vector<double>& initialInternal,
                         const std::vector<ConservedTotals>& now, RunSummary& summary,
                         const std::vector<DepositFiring>& firings) {
-  const std::size_t n = std::min(scene.materials.size(), now.size());
-  const bool haveInitial = initialKinetic.size() == n && initialInternal.size() == n;
-  for (std::size_t m = 0; m < n; ++m) {
-    const std::string key = "energy_" + ledgerKey(scene.materials[m].name);
-    if (haveInitial) {
-      summary.extras.push_back({key + "_kinetic_initial_J", initialKinetic[m]});
-      summary.extras.push_back({key + "_internal_initial_J", initialInternal[m]});
-    }
-    summary.extras.push_back({key + "_kinetic_J", now[m].kinetic});
-    summary.extras.push_back({key + "_internal_J", now[m].internal});
-  }
-  const LedgerGroups g = ledgerGroups(scene);
-  if (haveInitial && (!scene.deposits.empty() || !scene.detonations.empty()))
-    addSourceCoupling(scene, initialKinetic, initialInternal, now, firings, summary);
-  if (!haveInitial || g.impactor.empty() || g.target.empty()) return;
-  double impactorKinetic = 0.0, targetKinetic = 0.0, targetInternalGain = 0.0;
-  for (int m : g.impactor) impactorKinetic += initialKinetic[static_cast<std::size_t>(m)];
-  for (int m : g.target) {
-    const std::size_t k = static_cast<std::size_t>(m);
-    targetKinetic += now[k].kinetic - initialKinetic[k];
-    targetInternalGain += now[k].internal - initialInternal[k];
-  }
-  summary.extras.push_back({"impactor_kinetic_energy_J", impactorKinetic});
-  summary.extras.push_back({"target_kinetic_gain_J", targetKinetic});
-  summary.extras.push_back({"target_internal_gain_J", targetInternalGain});
-  if (impactorKinetic > 0.0)
-    summary.extras.push_back(
-        {"target_share_of_impactor_energy", (targetKinetic + targetInternalGain) / impactorKinetic});
+  addToSummary(ledgerSummary(scene, initialKinetic, initialInternal, now, firings), summary);
 }
 
 }  // namespace ejecta

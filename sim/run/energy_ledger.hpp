@@ -62,13 +62,59 @@ std::optional<double> depthOfBurst(const Scene& scene, const std::vector<Deposit
 // The material's name as a CSV/JSON key part: letters, digits, '-' and '_' kept, others '_'.
 std::string ledgerKey(const std::string& materialName);
 
-// Adds the partition to the summary's extras: per material the initial and final kinetic and
-// internal energy; for an impact the impactor's initial kinetic energy, the target's gain, its
-// kinetic/internal split and the share of the impactor's kinetic energy it represents; for a
-// source the yield (J and kt), when each deposit fired, the share of it in the target and its
-// split (from the target's energy just before a delayed source), the share still in the
-// explosive, and the depth of burst, scaled by the cube root of the yield (the seed's eq. 3.1;
-// not for 2D planar runs, whose yield is per metre).
+// The partition at the end of a run, typed: what summary.json's energy entries hold
+// (docs/output_format.md) and what `ejecta run` prints.
+struct LedgerSummary {
+  struct Material {
+    std::string key;  // ledgerKey of its name
+    std::optional<double> initialKinetic, initialInternal;  // [J]; empty without the t = 0 totals
+    double kinetic = 0.0, internal = 0.0;                    // now [J]
+  };
+  // When a deposit fired: at t = 0 with the particles, or a delayed one at its step (or never).
+  struct Deposit {
+    std::string key;       // "deposit_" + ledgerKey of its name
+    bool delayed = false;  // time > 0
+    std::optional<DepositFiring> firing;  // a delayed deposit's, once it fired
+  };
+  // A source's share of the run (the seed's Tables 3.4-3.6 and eq. 3.1).
+  struct Source {
+    double yield = 0.0;             // [J] (per metre in 2D planar)
+    bool planar = false;            // the yield is per metre: no kt, no scaled depth
+    std::optional<double> yieldKt;  // [kt of TNT]; not for 2D planar
+    int dimension = 3;              // coordinates of a firing point
+    std::vector<Deposit> deposits;
+    std::optional<double> targetEnergyBeforeSource;  // [J], a delayed source's reference
+    std::optional<double> targetShareOfYield, targetKineticFraction, targetInternalFraction,
+        explosiveShareOfYield;
+    std::optional<double> depthOfBurst;        // [m]
+    std::optional<double> scaledDepthOfBurst;  // [m / kt^(1/3)]
+  };
+  // An impact: the impactor's initial kinetic energy and what the target gained.
+  struct Impact {
+    double impactorKinetic = 0.0, targetKineticGain = 0.0, targetInternalGain = 0.0;  // [J]
+    std::optional<double> targetShareOfImpactorEnergy;
+  };
+  std::vector<Material> materials;
+  std::optional<Source> source;  // with deposits or detonations and the t = 0 totals
+  std::optional<Impact> impact;  // with an impactor, a target and the t = 0 totals
+};
+
+// The partition: per material the initial and final kinetic and internal energy; for an impact
+// the impactor's initial kinetic energy, the target's gain, its kinetic/internal split and the
+// share of the impactor's kinetic energy it represents; for a source the yield (J and kt), when
+// each deposit fired, the share of it in the target and its split (from the target's energy just
+// before a delayed source), the share still in the explosive, and the depth of burst, scaled by
+// the cube root of the yield (the seed's eq. 3.1; not for 2D planar runs, whose yield is per
+// metre).
+LedgerSummary ledgerSummary(const Scene& scene, const std::vector<double>& initialKinetic,
+                            const std::vector<double>& initialInternal,
+                            const std::vector<ConservedTotals>& now,
+                            const std::vector<DepositFiring>& firings = {});
+
+// Writes the partition into the summary's extras: the one place its summary.json keys are named.
+void addToSummary(const LedgerSummary& ledger, RunSummary& summary);
+
+// ledgerSummary added to the summary's extras.
 void addEnergyPartition(const Scene& scene, const std::vector<double>& initialKinetic,
                         const std::vector<double>& initialInternal,
                         const std::vector<ConservedTotals>& now, RunSummary& summary,

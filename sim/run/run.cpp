@@ -187,41 +187,12 @@ class RunOutputs {
     writeXdmfSeries((fs::path(options_.outDir) / "snapshots.xdmf").string(), xdmf_);
   }
   void setSeries(std::vector<XdmfEntry> entries) { xdmf_ = std::move(entries); }
-  // Each gauge's peak pressure and its time, from the whole of gauges.csv (a restarted run's
-  // too), into the summary.
-  // Each gauge's shock pulse (sim/sources/gauge_decay.hpp): the peak and its time, and, when the
-  // record holds the pulse, its arrival and Cole's decay constant theta (the 1/e time from the
-  // peak, and the log-linear fit over that e-fold). Overpressure is over the gauge's first
-  // reading, the ambient before anything arrives.
-  void addGaugePeaks(RunSummary& summary) {
-    if (!gauges_.is_open()) return;
+  // Each gauge's shock pulse (sim/run/gauge_summary.hpp), from the whole of gauges.csv (a
+  // restarted run's too).
+  std::vector<GaugeSummary> gaugePulses() {
+    if (!gauges_.is_open()) return {};
     gauges_.flush();
-    const GaugePressures history = readGaugePressures((fs::path(options_.outDir) / "gauges.csv").string());
-    for (std::size_t g = 0; g < history.names.size(); ++g) {
-      const std::vector<double>& p = history.pressure[g];
-      double ambient = std::numeric_limits<double>::quiet_NaN();
-      for (double v : p)
-        if (std::isfinite(v)) {
-          ambient = v;
-          break;
-        }
-      if (!std::isfinite(ambient)) continue;  // no particle ever reached the gauge
-      const std::string key = "gauge_" + history.names[g];
-      const auto peak = std::max_element(p.begin(), p.end(), [](double a, double b) {
-        return std::isnan(a) || (!std::isnan(b) && b > a);
-      });
-      summary.extras.push_back({key + "_peak_pressure_Pa", *peak});
-      summary.extras.push_back({key + "_peak_time_s", history.time[static_cast<std::size_t>(peak - p.begin())]});
-      if (history.time.size() < 2 || !(*peak > ambient)) continue;
-      try {
-        const ShockPulse pulse = measureShockPulse(history.time, p, ambient);
-        summary.extras.push_back({key + "_arrival_s", pulse.arrival});
-        if (std::isfinite(pulse.eFoldTime)) summary.extras.push_back({key + "_decay_time_s", pulse.eFoldTime});
-        if (std::isfinite(pulse.fitTime)) summary.extras.push_back({key + "_decay_fit_s", pulse.fitTime});
-      } catch (const std::invalid_argument& e) {  // e.g. a history whose times repeat
-        summary.extras.push_back({key + "_decay_note", std::string(e.what())});
-      }
-    }
+    return gaugeSummaries(readGaugePressures((fs::path(options_.outDir) / "gauges.csv").string()));
   }
   void setCouplingReference(CouplingReference ref) { reference_ = std::move(ref); }
 
@@ -383,10 +354,12 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
                       s.wallSeconds > 0 ? static_cast<double>(s.particles) *
                                               static_cast<double>(s.steps) / s.wallSeconds
                                         : 0.0});
-  addEnergyPartition(scene, info.initialMaterialKinetic, info.initialMaterialInternal,
-                     conservedTotalsByMaterial(sim.particles(), scene.materials.size()), s,
-                     sim.depositFirings());
-  outputs.addGaugePeaks(s);
+  outcome.ledger = ledgerSummary(scene, info.initialMaterialKinetic, info.initialMaterialInternal,
+                                 conservedTotalsByMaterial(sim.particles(), scene.materials.size()),
+                                 sim.depositFirings());
+  addToSummary(outcome.ledger, s);
+  outcome.gauges = outputs.gaugePulses();
+  addToSummary(outcome.gauges, s);
   if (options.onFinish) options.onFinish(sim, s);
   if (outputs.enabled())
     writeSummaryJson((fs::path(options.outDir) / "summary.json").string(), s);

@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "sim/setup/scene.hpp"
+#include "sim/run/energy_ledger.hpp"
+#include "sim/run/gauge_summary.hpp"
 #include "sim/run/simulation.hpp"
 #include "sim/io/snapshot.hpp"
 #include "sim/run/summary.hpp"
@@ -38,6 +40,9 @@ struct RunOptions {
 
 struct RunOutcome {
   RunSummary summary;
+  // The summary's typed parts, also written into summary.extras (as summary.json holds them).
+  LedgerSummary ledger;
+  std::vector<GaugeSummary> gauges;
   bool ok = true;
   std::string error;                   // the failure, when !ok
 };

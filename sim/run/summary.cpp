@@ -1,5 +1,7 @@
 #include "sim/run/summary.hpp"
 
+#include <stdexcept>
+
 #include <nlohmann/json.hpp>
 
 #include "sim/io/atomic_file.hpp"
@@ -17,7 +19,35 @@ Json toJson(const SummaryValue& value) {
 
 Json toJson(const std::array<double, 3>& v) { return Json::array({v[0], v[1], v[2]}); }
 
+const SummaryValue* findExtra(const RunSummary& s, const std::string& key) {
+  const SummaryValue* found = nullptr;
+  for (const auto& [k, v] : s.extras)
+    if (k == key) found = &v;
+  return found;
+}
+
+template <typename T>
+const T& extraAs(const RunSummary& s, const std::string& key, const char* type) {
+  const SummaryValue* v = findExtra(s, key);
+  if (!v) throw std::out_of_range("run summary: no extra '" + key + "'");
+  if (!std::holds_alternative<T>(*v))
+    throw std::out_of_range("run summary: extra '" + key + "' is not " + type);
+  return std::get<T>(*v);
+}
+
 }  // namespace
+
+bool RunSummary::has(const std::string& key) const { return findExtra(*this, key) != nullptr; }
+double RunSummary::number(const std::string& key) const {
+  return extraAs<double>(*this, key, "a number");
+}
+std::int64_t RunSummary::integer(const std::string& key) const {
+  return extraAs<std::int64_t>(*this, key, "an integer");
+}
+bool RunSummary::flag(const std::string& key) const { return extraAs<bool>(*this, key, "a flag"); }
+const std::string& RunSummary::text(const std::string& key) const {
+  return extraAs<std::string>(*this, key, "a text");
+}
 
 void writeSummaryJson(const std::string& path, const RunSummary& s) {
   Json doc;

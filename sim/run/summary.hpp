@@ -39,6 +39,15 @@ struct RunSummary {
 
   // Free-form additions, written in order under "extras" (a later duplicate key wins).
   std::vector<std::pair<std::string, SummaryValue>> extras;
+
+  // The extras read back as summary.json holds them (a later duplicate wins). The typed readers
+  // throw std::out_of_range naming the key when it is missing or holds another type, so a
+  // mistyped key fails loudly instead of reading as 0.
+  bool has(const std::string& key) const;
+  double number(const std::string& key) const;
+  std::int64_t integer(const std::string& key) const;
+  bool flag(const std::string& key) const;
+  const std::string& text(const std::string& key) const;
 };
 
 // Writes `summary` as pretty-printed JSON to `path`, atomically. Non-finite numbers (e.g. a

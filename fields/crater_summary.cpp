@@ -1,0 +1,44 @@
+#include "fields/crater_summary.hpp"
+
+namespace ejecta::fields {
+
+CraterSummary craterSummary(const CraterMetrics& m, bool planar) {
+  CraterSummary c;
+  c.found = m.found;
+  c.note = m.note;
+  c.planar = planar;
+  c.depth = m.depth;
+  c.apparentDiameter = m.apparentDiameter;
+  c.rimDiameter = m.rimDiameter;
+  c.rimHeight = m.rimHeight;
+  c.volume = m.volume;
+  c.excavatedMass = m.excavatedMass;
+  c.elongation = m.elongation;
+  return c;
+}
+
+CraterSummary craterFailure(const std::string& why) {
+  CraterSummary c;
+  c.note = why;
+  return c;
+}
+
+void addToSummary(const CraterSummary& c, RunSummary& s) {
+  s.extras.push_back({"crater_found", c.found});
+  if (!c.note.empty()) s.extras.push_back({"crater_note", c.note});
+  if (!c.found) return;
+  s.extras.push_back({"crater_depth_m", c.depth});
+  s.extras.push_back({"crater_apparent_diameter_m", c.apparentDiameter});
+  s.extras.push_back({"crater_rim_diameter_m", c.rimDiameter});
+  s.extras.push_back({"crater_rim_height_m", c.rimHeight});
+  if (c.planar) {
+    s.extras.push_back({"crater_area_m2", c.volume});
+    s.extras.push_back({"crater_excavated_mass_kg_per_m", c.excavatedMass});
+  } else {
+    s.extras.push_back({"crater_volume_m3", c.volume});
+    s.extras.push_back({"crater_excavated_mass_kg", c.excavatedMass});
+    s.extras.push_back({"crater_elongation", c.elongation});
+  }
+}
+
+}  // namespace ejecta::fields

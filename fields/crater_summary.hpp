@@ -1,0 +1,28 @@
+#pragma once
+// The crater at the end of an impact run, typed: what summary.json's "crater_*" entries hold
+// (docs/output_format.md) and what `ejecta run` prints.
+#include <string>
+
+#include "fields/crater.hpp"
+#include "sim/run/summary.hpp"
+
+namespace ejecta::fields {
+
+struct CraterSummary {
+  bool found = false;
+  std::string note;     // why none was found, or a remark; empty: none
+  bool planar = false;  // a 2D planar run's crater is a trench of unit depth
+  double depth = 0.0, apparentDiameter = 0.0, rimDiameter = 0.0, rimHeight = 0.0;  // [m]
+  double volume = 0.0;         // [m^3]; planar: the trench's cross-section [m^2]
+  double excavatedMass = 0.0;  // [kg]; planar: per metre [kg/m]
+  double elongation = 1.0;     // along-track / cross-track diameter; not for planar runs
+};
+
+CraterSummary craterSummary(const CraterMetrics& metrics, bool planar);
+// A measurement that failed: no crater, and why.
+CraterSummary craterFailure(const std::string& why);
+
+// Writes the crater into the summary's extras: the one place its summary.json keys are named.
+void addToSummary(const CraterSummary& crater, RunSummary& summary);
+
+}  // namespace ejecta::fields
