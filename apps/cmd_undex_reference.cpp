@@ -19,14 +19,14 @@
 #include <vector>
 
 #include "apps/commands.hpp"
-#include "sim/io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
+#include "sim/eos/jwl.hpp"
 #include "sim/exact/radial_lagrangian.hpp"
+#include "sim/setup/scene.hpp"
+#include "sim/solid/materials.hpp"
 #include "sim/sources/gauge_decay.hpp"
 #include "sim/sources/gauges.hpp"
-#include "sim/eos/jwl.hpp"
-#include "sim/solid/materials.hpp"
 #include "sim/sources/programmed_burn.hpp"
-#include "sim/setup/scene.hpp"
 
 namespace fs = std::filesystem;
 

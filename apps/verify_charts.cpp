@@ -4,7 +4,7 @@
 #include <array>
 
 #include "apps/csv_header.hpp"
-#include "sim/io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 namespace fs = std::filesystem;
 

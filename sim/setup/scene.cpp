@@ -12,9 +12,10 @@
 #include <sstream>
 #include <utility>
 
+#include "core/json.hpp"
+#include "core/units.hpp"
 #include "sim/eos/eos_catalog.hpp"
 #include "sim/state/particle_fields.hpp"
-#include "sim/setup/units.hpp"
 
 namespace ejecta {
 
@@ -367,18 +368,8 @@ toml::table parseOverrideValue(const std::string& text, const std::string& label
   } catch (const toml::parse_error&) {
     // not a TOML value: fall through to a string
   }
-  std::string quoted = "\"";
-  for (char c : text) {
-    if (static_cast<unsigned char>(c) < 0x20) {  // control characters must be escaped
-      static constexpr char kHex[] = "0123456789abcdef";
-      quoted += std::string("\\u00") + kHex[(c >> 4) & 0xF] + kHex[c & 0xF];
-      continue;
-    }
-    if (c == '"' || c == '\\') quoted += '\\';
-    quoted += c;
-  }
-  quoted += '"';
-  return toml::parse("v = " + quoted, label);
+  // A JSON string literal is a TOML basic string too (the same escapes: \" \\ \n \uXXXX).
+  return toml::parse("v = " + jsonString(text), label);
 }
 
 void applyOverride(toml::table& root, const std::string& text, const std::string& sourceName) {
