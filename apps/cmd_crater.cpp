@@ -7,15 +7,15 @@
 #include <fstream>
 
 #include "apps/commands.hpp"
+#include "core/atomic_file.hpp"
+#include "core/units.hpp"
 #include "fields/crater.hpp"
 #include "fields/crater_setup.hpp"
 #include "fields/grid_set.hpp"
 #include "fields/measure_crater.hpp"
 #include "fields/vdb_grids.hpp"
-#include "sim/io/atomic_file.hpp"
-#include "sim/run/run.hpp"
 #include "sim/io/snapshot.hpp"
-#include "sim/setup/units.hpp"
+#include "sim/run/run.hpp"
 
 namespace fs = std::filesystem;
 

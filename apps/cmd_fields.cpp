@@ -2,12 +2,12 @@
 #include <cstdio>
 
 #include "apps/commands.hpp"
+#include "core/units.hpp"
 #include "fields/crater_setup.hpp"
 #include "fields/grid_set.hpp"
 #include "fields/vdb_grids.hpp"
-#include "sim/run/run.hpp"
 #include "sim/io/snapshot.hpp"
-#include "sim/setup/units.hpp"
+#include "sim/run/run.hpp"
 
 namespace ejecta::app {
 

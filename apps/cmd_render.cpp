@@ -12,9 +12,9 @@
 #include "apps/commands.hpp"
 #include "coupling/grid_images.hpp"
 #include "coupling/particle_images.hpp"
+#include "core/units.hpp"
 #include "fields/grid_slice.hpp"
 #include "sim/io/snapshot.hpp"
-#include "sim/setup/units.hpp"
 
 namespace fs = std::filesystem;
 

@@ -20,10 +20,10 @@
 
 #include "apps/commands.hpp"
 #include "coupling/sweep_chart.hpp"
+#include "core/atomic_file.hpp"
 #include "render/charts.hpp"
-#include "sim/io/atomic_file.hpp"
-#include "sim/setup/scene.hpp"
 #include "sim/run/sweep.hpp"
+#include "sim/setup/scene.hpp"
 
 extern char** environ;
 

@@ -19,7 +19,7 @@
 #include "apps/commands.hpp"
 #include "sim/exact/radial_lagrangian.hpp"
 #include "sim/exact/underwater_explosion_laws.hpp"
-#include "sim/io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 #include "sim/setup/scene.hpp"
 #include "sim/sources/gauge_decay.hpp"
 #include "sim/verify/undex_reference.hpp"

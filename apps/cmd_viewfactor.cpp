@@ -8,10 +8,10 @@
 #include <stdexcept>
 
 #include "apps/commands.hpp"
+#include "core/atomic_file.hpp"
 #include "radiation/geometry_file.hpp"
 #include "radiation/view_factor_convergence.hpp"
 #include "render/charts.hpp"
-#include "sim/io/atomic_file.hpp"
 
 namespace fs = std::filesystem;
 

@@ -8,9 +8,9 @@
 
 #include "apps/commands.hpp"
 #include "coupling/json_text.hpp"
+#include "core/atomic_file.hpp"
 #include "radiation/whipple_study.hpp"
 #include "render/charts.hpp"
-#include "sim/io/atomic_file.hpp"
 
 namespace ejecta::app {
 

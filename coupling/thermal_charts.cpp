@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "sim/io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 namespace fs = std::filesystem;
 

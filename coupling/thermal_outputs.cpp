@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "sim/io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 namespace ejecta::coupling {
 

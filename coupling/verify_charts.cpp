@@ -4,7 +4,7 @@
 #include <array>
 
 #include "coupling/csv_header.hpp"
-#include "sim/io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 namespace fs = std::filesystem;
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "sim/io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 namespace fs = std::filesystem;
 

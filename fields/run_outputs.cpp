@@ -5,13 +5,13 @@
 #include <memory>
 #include <optional>
 
+#include "core/atomic_file.hpp"
 #include "fields/crater_history.hpp"
 #include "fields/crater_summary.hpp"
 #include "fields/crater_setup.hpp"
 #include "fields/grid_set.hpp"
 #include "fields/measure_crater.hpp"
 #include "fields/vdb_grids.hpp"
-#include "sim/io/atomic_file.hpp"
 
 namespace fs = std::filesystem;
 

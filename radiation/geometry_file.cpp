@@ -16,6 +16,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/json.hpp"
 #include "radiation/mesh_io.hpp"
 
 namespace ejecta::radiation {
@@ -587,23 +588,8 @@ std::string fmt(const char* format, double x) {
   return buf;
 }
 
-std::string jsonString(const std::string& s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) out += fmt("\\u%04x", static_cast<unsigned char>(c));
-        else out += c;
-    }
-  }
-  return out + "\"";
-}
-
-std::string jsonNumber(double x) { return std::isfinite(x) ? fmt("%.10g", x) : "null"; }
+// The report's numbers: 10 significant digits, null where not finite.
+std::string jsonNumber(double x) { return ejecta::jsonNumber(x, 10); }
 
 std::string jsonEstimate(const Estimate& e) {
   return "{\"value\": " + jsonNumber(e.value) + ", \"std_error\": " + jsonNumber(e.standardError) + "}";

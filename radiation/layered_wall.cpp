@@ -1,18 +1,14 @@
 #include "radiation/layered_wall.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <limits>
-#include <random>
 #include <stdexcept>
 #include <string>
 #include <utility>
+
+#include "core/atomic_file.hpp"
 
 namespace ejecta::radiation {
 
@@ -23,47 +19,6 @@ constexpr double kNever = std::numeric_limits<double>::quiet_NaN();
 std::string layerName(std::size_t index, std::size_t count, const WallLayer& layer) {
   return "layer " + std::to_string(index + 1) + " of " + std::to_string(count) + " ('" +
          layer.material.name + "')";
-}
-
-// Atomic replacement: write a temporary file in the target's directory, sync it, rename it over
-// the target. radiation/ links no other ejecta library, so it carries its own small copy of
-// sim/atomic_file's idea.
-void writeTextAtomically(const std::filesystem::path& path, const std::string& text) {
-  auto fail = [&](const std::string& what, int err) {
-    throw std::runtime_error("cannot write '" + path.string() + "': " + what + ": " +
-                             std::strerror(err));
-  };
-  std::random_device entropy;
-  char suffix[40];
-  std::snprintf(suffix, sizeof suffix, ".tmp-%08x%08x", entropy(), entropy());
-  std::string name = ".";
-  name += path.filename().string();
-  name += suffix;
-  const std::filesystem::path temp = path.parent_path() / name;
-  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (fd < 0) fail("create '" + temp.string() + "'", errno);
-  std::string_view rest = text;
-  while (!rest.empty()) {
-    const ssize_t n = ::write(fd, rest.data(), rest.size());
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) {
-      const int err = errno;
-      ::close(fd);
-      ::unlink(temp.c_str());
-      fail("write", err);
-    }
-    rest.remove_prefix(static_cast<std::size_t>(n));
-  }
-  if (::fsync(fd) != 0 || ::close(fd) != 0) {
-    const int err = errno;
-    ::unlink(temp.c_str());
-    fail("sync", err);
-  }
-  if (std::rename(temp.c_str(), path.c_str()) != 0) {
-    const int err = errno;
-    ::unlink(temp.c_str());
-    fail("rename", err);
-  }
 }
 
 std::string number(double v) {
@@ -257,7 +212,7 @@ void writeWallHistoryCsv(const std::filesystem::path& path, const WallHistory& h
     for (std::size_t l = 0; l < wall.layerCount(); ++l) cell(history.layerMaximum(l)[r]);
     out += '\n';
   }
-  writeTextAtomically(path, out);
+  writeFileAtomically(path, out);
 }
 
 void WallSolver::run(double endTime, double dt, WallHistory* history) {

@@ -14,6 +14,8 @@
 #include <set>
 #include <sstream>
 
+#include "core/json.hpp"
+#include "core/units.hpp"
 #include "radiation/radiative_balance.hpp"
 #include "radiation/wall_implicit.hpp"
 
@@ -43,13 +45,6 @@ const std::map<std::string_view, KeyList>& allowedKeys() {
       {"baseline", {"length"}},
   };
   return keys;
-}
-
-std::string trim(std::string s) {
-  const auto b = s.find_first_not_of(" \t");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t");
-  return s.substr(b, e - b + 1);
 }
 
 std::string typeName(const toml::node& n) {
@@ -112,19 +107,19 @@ class Table {
     if (!(x >= lo && x <= hi)) fail(k, std::string("must be in ") + range);
     return x;
   }
-  // A number (SI) or a string with a unit ("10 km/s").
-  double quantity(std::string_view k, Quantity kind) const {
+  // A number (SI) or a string with a unit ("10 km/s"), read by core's parser: a scene's units.
+  double quantity(std::string_view k, Dimension kind) const {
     const toml::node& n = require(k);
     if (n.is_string()) {
       try {
         return parseQuantity(*n.value<std::string>(), kind);
-      } catch (const std::invalid_argument& e) {
+      } catch (const UnitError& e) {
         fail(k, e.what());
       }
     }
     return number(k);
   }
-  double positiveQuantity(std::string_view k, Quantity kind, double fallback) const {
+  double positiveQuantity(std::string_view k, Dimension kind, double fallback) const {
     if (!has(k)) return fallback;
     const double x = quantity(k, kind);
     if (!(x > 0.0)) fail(k, "must be > 0");
@@ -234,8 +229,8 @@ void readSpacecraft(const Table& t, ThermalStudy& s, const fs::path& base, const
     for (int k = 0; k < 3; ++k)
       if (!(b.size[k] > 0.0)) t.fail("size", "every size must be > 0 ([depth, height, width] in m)");
   } else if (b.kind == K::Cylinder) {
-    b.radius = t.positiveQuantity("radius", Quantity::Length, 0.0);
-    b.length = t.positiveQuantity("length", Quantity::Length, 0.0);
+    b.radius = t.positiveQuantity("radius", Dimension::Length, 0.0);
+    b.length = t.positiveQuantity("length", Dimension::Length, 0.0);
     if (b.radius == 0.0) t.require("radius");
     if (b.length == 0.0) t.require("length");
     b.segments = static_cast<int>(t.integer("segments", 64, 3, 1 << 16));
@@ -245,7 +240,7 @@ void readSpacecraft(const Table& t, ThermalStudy& s, const fs::path& base, const
     const fs::path p = t.string("mesh");
     if (p.empty()) t.fail("mesh", "must not be empty");
     b.mesh = p.is_absolute() ? p : base / p;
-    b.scale = t.positiveQuantity("scale", Quantity::Length, 1.0);
+    b.scale = t.positiveQuantity("scale", Dimension::Length, 1.0);
     if (t.has("patch")) b.name = t.string("patch");
   }
   // side0 (body +x) leads: by default it points along the flight, towards the crater.
@@ -268,7 +263,7 @@ void readApproach(const Table& t, ApproachSpec& a) {
   if (t.has("start")) {
     a.start = t.vector("start");
   } else {
-    const double d = t.positiveQuantity("distance", Quantity::Length, 0.0);
+    const double d = t.positiveQuantity("distance", Dimension::Length, 0.0);
     a.start = vec3::add(a.target, vec3::scale(t.direction("direction", {0, 1, 0}), d));
   }
   const Vec3 towards = vec3::sub(a.target, a.start);
@@ -279,18 +274,18 @@ void readApproach(const Table& t, ApproachSpec& a) {
   if (t.has("velocity")) {
     a.velocity = t.vector("velocity");
   } else {
-    const double v = t.positiveQuantity("speed", Quantity::Speed, 0.0);
+    const double v = t.positiveQuantity("speed", Dimension::Velocity, 0.0);
     if (vec3::norm(towards) == 0.0) t.fail("speed", "the start is the target: no direction to fly in");
     a.velocity = vec3::scale(towards, v / vec3::norm(towards));
   }
-  a.duration = t.positiveQuantity("duration", Quantity::Time, 0.0);
+  a.duration = t.positiveQuantity("duration", Dimension::Time, 0.0);
   if (a.duration == 0.0) t.require("duration");
   a.samples = static_cast<int>(t.integer("samples", 11, 2, 100000));
 }
 
 void readEmitters(const Table& t, EmitterChoice& e) {
   if (t.has("min_temperature")) {
-    e.minTemperature = t.quantity("min_temperature", Quantity::Temperature);
+    e.minTemperature = t.quantity("min_temperature", Dimension::Temperature);
     if (!(e.minTemperature >= 0.0)) t.fail("min_temperature", "must be >= 0 K");
   }
   e.defaultEmissivity = t.inRange("default_emissivity", kGraniteEmissivity, 1e-300, 1.0, "(0, 1]");
@@ -317,7 +312,7 @@ WallSpec readWall(const Table& t) {
   for (std::size_t i = 0; i < layers.size(); ++i) {
     const Table l(t.source(), *layers[i], t.key("layers") + "[" + std::to_string(i) + "]", "layers[]");
     const std::string material = l.string("material");
-    const double thickness = l.positiveQuantity("thickness", Quantity::Length, 0.0);
+    const double thickness = l.positiveQuantity("thickness", Dimension::Length, 0.0);
     if (thickness == 0.0) l.require("thickness");
     const int cells = static_cast<int>(l.integer("cells", 20, 1, 100000));
     try {
@@ -340,11 +335,11 @@ void readLimit(const Table& t, ShieldLimit& limit) {
     if (t.has("value")) t.fail("value", "not used by kind 'melting'");
   } else if (kind == "margin") {
     limit.kind = K::MarginBelowMelting;
-    limit.value = t.quantity("value", Quantity::Temperature);
+    limit.value = t.quantity("value", Dimension::Temperature);
     if (!(limit.value >= 0.0)) t.fail("value", "the margin must be >= 0 K");
   } else if (kind == "temperature") {
     limit.kind = K::Temperature;
-    limit.value = t.quantity("value", Quantity::Temperature);
+    limit.value = t.quantity("value", Dimension::Temperature);
     if (!(limit.value > 0.0)) t.fail("value", "must be > 0 K");
   } else {
     t.fail("kind", "unknown value '" + kind + "'; allowed: 'melting', 'margin', 'temperature'");
@@ -361,7 +356,7 @@ void readSizing(const Table& t, SizingSpec& s) {
     }
   }
   s.patches = t.strings("patches");
-  s.maxThickness = t.positiveQuantity("max_thickness", Quantity::Length, s.maxThickness);
+  s.maxThickness = t.positiveQuantity("max_thickness", Dimension::Length, s.maxThickness);
   s.tolerance = t.inRange("tolerance", s.tolerance, 1e-9, 0.5, "[1e-9, 0.5]");
   s.coatingCells = static_cast<int>(t.integer("coating_cells", s.coatingCells, 1, 100000));
 }
@@ -381,25 +376,8 @@ void readSampling(const Table& t, SamplingOptions& s) {
                                                 std::numeric_limits<long long>::max()));
 }
 
-std::string jsonString(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\', out += c;
-    else if (static_cast<unsigned char>(c) < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(c));
-      out += buf;
-    } else out += c;
-  }
-  return out + "\"";
-}
-
-std::string num(double x) {
-  if (!std::isfinite(x)) return "null";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.12g", x);
-  return buf;
-}
+// thermal.json's numbers: 12 significant digits, null where not finite.
+std::string num(double x) { return jsonNumber(x, 12); }
 
 std::string csvNum(double x) {
   char buf[32];
@@ -417,29 +395,6 @@ std::vector<double> ApproachSpec::times() const {
   std::vector<double> t(static_cast<std::size_t>(samples));
   for (int i = 0; i < samples; ++i) t[i] = duration * i / (samples - 1);
   return t;
-}
-
-double parseQuantity(const std::string& text, Quantity kind) {
-  const std::string s = trim(text);
-  const char* begin = s.c_str();
-  char* end = nullptr;
-  const double value = std::strtod(begin, &end);
-  if (end == begin || !std::isfinite(value))
-    throw std::invalid_argument("'" + text + "' does not start with a finite number");
-  const std::string unit = trim(std::string(end));
-  static const std::map<Quantity, std::vector<std::pair<std::string, double>>> units = {
-      {Quantity::Length, {{"m", 1.0}, {"km", 1e3}, {"cm", 1e-2}, {"mm", 1e-3}, {"um", 1e-6}, {"µm", 1e-6}}},
-      {Quantity::Time, {{"s", 1.0}, {"ms", 1e-3}, {"us", 1e-6}, {"µs", 1e-6}, {"ns", 1e-9}}},
-      {Quantity::Speed, {{"m/s", 1.0}, {"km/s", 1e3}}},
-      {Quantity::Temperature, {{"K", 1.0}}},
-  };
-  if (unit.empty()) return value;
-  std::string list;
-  for (const auto& [name, factor] : units.at(kind)) {
-    if (name == unit) return value * factor;
-    list += std::string(list.empty() ? "" : ", ") + name;
-  }
-  throw std::invalid_argument("unknown unit '" + unit + "' in '" + text + "'; allowed: " + list);
 }
 
 ThermalStudy parseThermalStudy(const std::string& tomlText, const std::string& sourceName,
@@ -472,10 +427,10 @@ ThermalStudy parseThermalStudy(const std::string& tomlText, const std::string& s
     s.walls.push_back(readWall(Table(s.source, *walls[i], "walls[" + std::to_string(i) + "]", "walls[]")));
   const Table wall = sub(top, "wall", "wall");
   if (wall.has("initial_temperature")) {
-    s.initialTemperature = wall.quantity("initial_temperature", Quantity::Temperature);
+    s.initialTemperature = wall.quantity("initial_temperature", Dimension::Temperature);
     if (!(s.initialTemperature > 0.0)) wall.fail("initial_temperature", "must be > 0 K");
   }
-  s.timeStep = wall.positiveQuantity("time_step", Quantity::Time, 0.0);
+  s.timeStep = wall.positiveQuantity("time_step", Dimension::Time, 0.0);
   readLimit(sub(top, "limit", "limit"), s.limit);
   const Table sizing = sub(top, "sizing", "sizing");
   readSizing(sizing, s.sizing);
@@ -483,7 +438,7 @@ ThermalStudy parseThermalStudy(const std::string& tomlText, const std::string& s
     sizing.fail("coatings", "sizing needs a structure: give [[walls]] (its last layer is the structure)");
   readSampling(sub(top, "sampling", "sampling"), s.sampling);
   const Table baseline = sub(top, "baseline", "baseline");
-  s.baseline.receiverSide = baseline.positiveQuantity("length", Quantity::Length, 0.0);
+  s.baseline.receiverSide = baseline.positiveQuantity("length", Dimension::Length, 0.0);
   return s;
 }
 

@@ -95,11 +95,6 @@ ThermalStudy parseThermalStudy(const std::string& tomlText, const std::string& s
                                const std::filesystem::path& baseDirectory);
 ThermalStudy loadThermalStudy(const std::filesystem::path& path);
 
-// Parses "<number> [unit]" for lengths (m, cm, mm, um, km), times (s, ms, us, ns), speeds (m/s,
-// km/s) and temperatures (K). A bare number is SI. Throws std::invalid_argument with the reason.
-enum class Quantity { Length, Time, Speed, Temperature };
-double parseQuantity(const std::string& text, Quantity kind);
-
 // Per patch results.
 struct PatchThermal {
   std::string patch;

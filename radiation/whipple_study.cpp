@@ -7,13 +7,13 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <utility>
 
-#include "radiation/thermal_study.hpp"
+#include "core/json.hpp"
+#include "core/units.hpp"
 
 namespace ejecta::radiation {
 
@@ -36,12 +36,6 @@ const std::map<std::string_view, KeyList>& allowedKeys() {
       {"options", {"max_obliquity"}},
   };
   return keys;
-}
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t") - b + 1);
 }
 
 // Checked access to one table; failures name the file, the line and the dotted key.
@@ -74,11 +68,11 @@ class Table {
   }
 
   // A number (SI) or a string with a unit, at node n named fullKey.
-  double quantityAt(const toml::node& n, const std::string& fullKey, WhippleQuantity kind) const {
+  double quantityAt(const toml::node& n, const std::string& fullKey, Dimension kind) const {
     if (n.is_string()) {
       try {
-        return parseWhippleQuantity(*n.value<std::string>(), kind);
-      } catch (const std::invalid_argument& e) {
+        return parseQuantity(*n.value<std::string>(), kind);  // core's parser: a scene's units
+      } catch (const UnitError& e) {
         failAt(&n, fullKey, e.what());
       }
     }
@@ -88,21 +82,21 @@ class Table {
     if (!std::isfinite(x)) failAt(&n, fullKey, "must be finite");
     return x;
   }
-  double quantity(std::string_view k, WhippleQuantity kind) const {
+  double quantity(std::string_view k, Dimension kind) const {
     const toml::node* n = find(k);
     if (!n) failAt(&t_, key(k), "required key is missing");
     return quantityAt(*n, key(k), kind);
   }
-  double positive(std::string_view k, WhippleQuantity kind) const {
+  double positive(std::string_view k, Dimension kind) const {
     const double x = quantity(k, kind);
     if (!(x > 0.0)) fail(k, "must be > 0");
     return x;
   }
-  double positive(std::string_view k, WhippleQuantity kind, double fallback) const {
+  double positive(std::string_view k, Dimension kind, double fallback) const {
     return has(k) ? positive(k, kind) : fallback;
   }
   // One quantity or an array of them, each > 0.
-  std::vector<double> positiveList(std::string_view k, WhippleQuantity kind) const {
+  std::vector<double> positiveList(std::string_view k, Dimension kind) const {
     const toml::node* n = find(k);
     if (!n) failAt(&t_, key(k), "required key is missing");
     const toml::array* a = n->as_array();
@@ -151,16 +145,8 @@ std::string num(const char* spec, double x) {
 }
 std::string mm(double metres) { return num("%.4g", metres * 1e3); }
 std::string kms(double speed) { return num("%.4g", speed * 1e-3); }
-std::string jsonNumber(double x) { return std::isfinite(x) ? num("%.12g", x) : "null"; }
-
-std::string jsonText(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (static_cast<unsigned char>(c) >= 0x20) out += c;
-  }
-  return out + "\"";
-}
+// whipple.json's numbers: 12 significant digits, null where not finite.
+std::string jsonNumber(double x) { return ejecta::jsonNumber(x, 12); }
 
 std::string limitJson(double speed, const BallisticLimit& l) {
   return "{\"speed_m_s\": " + jsonNumber(speed) + ", \"normal_speed_m_s\": " + jsonNumber(l.normalSpeed) +
@@ -169,33 +155,6 @@ std::string limitJson(double speed, const BallisticLimit& l) {
 }
 
 }  // namespace
-
-double parseWhippleQuantity(const std::string& text, WhippleQuantity kind) {
-  if (kind == WhippleQuantity::Length) return parseQuantity(text, Quantity::Length);
-  if (kind == WhippleQuantity::Speed) return parseQuantity(text, Quantity::Speed);
-  const std::string s = trim(text);
-  char* end = nullptr;
-  const double value = std::strtod(s.c_str(), &end);
-  if (end == s.c_str() || !std::isfinite(value))
-    throw std::invalid_argument("'" + text + "' does not start with a finite number");
-  const std::string unit = trim(std::string(end));
-  if (unit.empty()) return value;
-  // psi: NIST SP 811 (2008) app. B.9, 1 lbf/in^2 = 6894.757293168361 Pa (exact from the
-  // international pound-force and inch); ksi = 1000 psi.
-  static const std::map<WhippleQuantity, std::vector<std::pair<std::string, double>>> units = {
-      {WhippleQuantity::Density, {{"kg/m^3", 1.0}, {"kg/m3", 1.0}, {"g/cm^3", 1e3}, {"g/cm3", 1e3}, {"g/cc", 1e3}}},
-      {WhippleQuantity::Stress,
-       {{"Pa", 1.0}, {"kPa", 1e3}, {"MPa", 1e6}, {"GPa", 1e9}, {"psi", kPascalPerKsi * 1e-3}, {"ksi", kPascalPerKsi}}},
-      {WhippleQuantity::Angle, {{"deg", kDegree}, {"rad", 1.0}}},
-      {WhippleQuantity::Area, {{"m^2", 1.0}, {"m2", 1.0}, {"cm^2", 1e-4}, {"cm2", 1e-4}}},
-  };
-  std::string list;
-  for (const auto& [name, factor] : units.at(kind)) {
-    if (name == unit) return value * factor;
-    list += std::string(list.empty() ? "" : ", ") + name;
-  }
-  throw std::invalid_argument("unknown unit '" + unit + "' in '" + text + "'; allowed: " + list);
-}
 
 WhippleStudy parseWhippleStudy(const std::string& tomlText, const std::string& sourceName) {
   toml::table root;
@@ -214,36 +173,36 @@ WhippleStudy parseWhippleStudy(const std::string& tomlText, const std::string& s
 
   if (!top.has("shield")) top.fail("shield", "required: the bumper, rear wall and standoff ([shield])");
   const Table shield = top.sub("shield");
-  s.shield.bumperThickness = shield.positive("bumper_thickness", WhippleQuantity::Length);
-  s.shield.bumperDensity = shield.positive("bumper_density", WhippleQuantity::Density);
-  s.wallThicknesses = shield.positiveList("wall_thickness", WhippleQuantity::Length);
+  s.shield.bumperThickness = shield.positive("bumper_thickness", Dimension::Length);
+  s.shield.bumperDensity = shield.positive("bumper_density", Dimension::Density);
+  s.wallThicknesses = shield.positiveList("wall_thickness", Dimension::Length);
   s.shield.wallThickness = s.wallThicknesses.front();
-  s.shield.wallDensity = shield.positive("wall_density", WhippleQuantity::Density, 0.0);
-  s.shield.wallYieldStress = shield.positive("wall_yield", WhippleQuantity::Stress);
-  s.shield.standoff = shield.positive("standoff", WhippleQuantity::Length);
-  s.area = shield.positive("area", WhippleQuantity::Area, 0.0);
+  s.shield.wallDensity = shield.positive("wall_density", Dimension::Density, 0.0);
+  s.shield.wallYieldStress = shield.positive("wall_yield", Dimension::Pressure);
+  s.shield.standoff = shield.positive("standoff", Dimension::Length);
+  s.area = shield.positive("area", Dimension::Area, 0.0);
 
   if (!top.has("threat")) top.fail("threat", "required: the projectile's density ([threat])");
   const Table threat = top.sub("threat");
-  s.threat.density = threat.positive("density", WhippleQuantity::Density);
+  s.threat.density = threat.positive("density", Dimension::Density);
   if (threat.has("angle")) {
-    s.threat.angle = threat.quantity("angle", WhippleQuantity::Angle);
+    s.threat.angle = threat.quantity("angle", Dimension::Angle);
     if (!(s.threat.angle >= 0.0 && s.threat.angle < 90.0 * kDegree))
       threat.fail("angle", "must be in [0, 90) deg from the bumper normal");
   }
-  s.threat.diameter = threat.positive("diameter", WhippleQuantity::Length, 0.0);
-  s.threat.speed = threat.positive("speed", WhippleQuantity::Speed, 0.0);
+  s.threat.diameter = threat.positive("diameter", Dimension::Length, 0.0);
+  s.threat.speed = threat.positive("speed", Dimension::Velocity, 0.0);
 
   const Table curve = top.sub("curve");
-  s.speedMin = curve.positive("speed_min", WhippleQuantity::Speed, s.speedMin);
-  s.speedMax = curve.positive("speed_max", WhippleQuantity::Speed, s.speedMax);
+  s.speedMin = curve.positive("speed_min", Dimension::Velocity, s.speedMin);
+  s.speedMax = curve.positive("speed_max", Dimension::Velocity, s.speedMax);
   if (!(s.speedMax > s.speedMin)) curve.fail(curve.has("speed_max") ? "speed_max" : "speed_min",
                                              "speed_max must exceed speed_min");
   s.samples = static_cast<int>(curve.integer("samples", s.samples, 2, 100000));
 
   const Table options = top.sub("options");
   if (options.has("max_obliquity")) {
-    s.options.maxObliquity = options.quantity("max_obliquity", WhippleQuantity::Angle);
+    s.options.maxObliquity = options.quantity("max_obliquity", Dimension::Angle);
     if (!(s.options.maxObliquity > 0.0 && s.options.maxObliquity <= 90.0 * kDegree))
       options.fail("max_obliquity", "must be in (0, 90] deg");
   }
@@ -321,8 +280,8 @@ std::string formatWhippleJson(const WhippleResult& result) {
   const WhippleThreat& t = s.threat;
   const double theta = std::min(t.angle, s.options.maxObliquity);
   std::string j = "{\n";
-  j += "  \"name\": " + jsonText(s.name) + ",\n  \"source\": " + jsonText(s.source) + ",\n";
-  j += "  \"description\": " + jsonText(s.description) + ",\n";
+  j += "  \"name\": " + jsonString(s.name) + ",\n  \"source\": " + jsonString(s.source) + ",\n";
+  j += "  \"description\": " + jsonString(s.description) + ",\n";
   j += "  \"equations\": \"Christiansen (1993), Int. J. Impact Eng. 14, 145-156: Whipple shield BLE\",\n";
   j += "  \"shield\": {\"bumper_thickness_m\": " + jsonNumber(s.shield.bumperThickness) +
        ", \"bumper_density_kg_m3\": " + jsonNumber(s.shield.bumperDensity) +

@@ -50,12 +50,6 @@ struct WhippleStudy {
 WhippleStudy parseWhippleStudy(const std::string& tomlText, const std::string& sourceName);
 WhippleStudy loadWhippleStudy(const std::filesystem::path& path);
 
-// "<number> [unit]" for the study's quantities; a bare number is SI. Length and speed take
-// parseQuantity's units (thermal_study.hpp); density kg/m^3, g/cm^3; stress Pa, kPa, MPa, GPa,
-// psi, ksi; angle deg, rad; area m^2, cm^2. Throws std::invalid_argument with the reason.
-enum class WhippleQuantity { Length, Speed, Density, Stress, Angle, Area };
-double parseWhippleQuantity(const std::string& text, WhippleQuantity kind);
-
 struct WhippleWallResult {
   WhippleShield shield;                    // with this wall
   std::vector<BallisticLimitPoint> curve;

@@ -2,11 +2,11 @@
 
 #include <stdlib.h>
 
-#include <cstdio>
 #include <stdexcept>
 #include <system_error>
 
-#include "render/atomic_write.hpp"
+#include "core/atomic_file.hpp"
+#include "core/json.hpp"
 #include "render/chart_script.hpp"
 #include "render/process.hpp"
 
@@ -16,40 +16,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string quoted(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    const auto u = static_cast<unsigned char>(c);
-    switch (c) {
-      case '"':
-        out += "\\\"";
-        break;
-      case '\\':
-        out += "\\\\";
-        break;
-      case '\n':
-        out += "\\n";
-        break;
-      case '\r':
-        out += "\\r";
-        break;
-      case '\t':
-        out += "\\t";
-        break;
-      default:
-        if (u < 0x20) {
-          char escaped[8];
-          std::snprintf(escaped, sizeof escaped, "\\u%04x", u);
-          out += escaped;
-        } else {
-          out += c;  // UTF-8 passes through: JSON text is UTF-8
-        }
-    }
-  }
-  return out + "\"";
-}
-
-std::string path(const fs::path& p) { return quoted(p.empty() ? "" : fs::absolute(p).string()); }
+std::string path(const fs::path& p) { return jsonString(p.empty() ? "" : fs::absolute(p).string()); }
 const char* boolean(bool b) { return b ? "true" : "false"; }
 
 // A private temporary directory, removed with everything in it when done.
@@ -84,9 +51,9 @@ std::string chartSpecJson(const ChartSpec& spec) {
   if (spec.kind == ChartKind::Bar && spec.x.empty())
     throw std::invalid_argument("chart spec: a bar chart needs 'x', the category column");
   std::string json = "{\n";
-  json += "  \"kind\": " + quoted(spec.kind == ChartKind::Bar ? "bar" : "line") + ",\n";
+  json += "  \"kind\": " + jsonString(spec.kind == ChartKind::Bar ? "bar" : "line") + ",\n";
   json += "  \"csv\": " + path(spec.csv) + ",\n";
-  json += "  \"x\": " + quoted(spec.x) + ",\n";
+  json += "  \"x\": " + jsonString(spec.x) + ",\n";
   json += "  \"series\": [";
   for (std::size_t i = 0; i < spec.series.size(); ++i) {
     const ChartSeries& s = spec.series[i];
@@ -97,9 +64,9 @@ std::string chartSpecJson(const ChartSpec& spec) {
     if (s.x.empty() && spec.x.empty())
       throw std::invalid_argument("chart spec: series '" + s.y + "' has no 'x'");
     json += i ? ",\n    {" : "\n    {";
-    json += "\"y\": " + quoted(s.y);
-    if (!s.label.empty()) json += ", \"label\": " + quoted(s.label);
-    if (!s.x.empty()) json += ", \"x\": " + quoted(s.x);
+    json += "\"y\": " + jsonString(s.y);
+    if (!s.label.empty()) json += ", \"label\": " + jsonString(s.label);
+    if (!s.x.empty()) json += ", \"x\": " + jsonString(s.x);
     if (!s.csv.empty()) json += ", \"csv\": " + path(s.csv);
     json += std::string(", \"reference\": ") + boolean(s.reference);
     json += std::string(", \"markers\": ") + boolean(s.markers);
@@ -108,9 +75,9 @@ std::string chartSpecJson(const ChartSpec& spec) {
   json += "\n  ],\n";
   json += std::string("  \"xlog\": ") + boolean(spec.xlog) + ",\n";
   json += std::string("  \"ylog\": ") + boolean(spec.ylog) + ",\n";
-  json += "  \"xlabel\": " + quoted(spec.xlabel) + ",\n";
-  json += "  \"ylabel\": " + quoted(spec.ylabel) + ",\n";
-  json += "  \"title\": " + quoted(spec.title) + ",\n";
+  json += "  \"xlabel\": " + jsonString(spec.xlabel) + ",\n";
+  json += "  \"ylabel\": " + jsonString(spec.ylabel) + ",\n";
+  json += "  \"title\": " + jsonString(spec.title) + ",\n";
   json += "  \"out\": " + path(spec.out) + ",\n";
   json += "  \"width\": " + std::to_string(spec.width) + ",\n";
   json += "  \"height\": " + std::to_string(spec.height) + "\n}\n";

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "render/atomic_write.hpp"
+#include "core/atomic_file.hpp"
 
 // libpng's "simplified API" (png_image_*) reports errors in the png_image structure instead of
 // longjmp, so no C++ object is ever skipped over by a jump.

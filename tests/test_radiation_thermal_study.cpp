@@ -10,6 +10,7 @@
 #include <numbers>
 #include <string>
 
+#include "core/units.hpp"
 #include "radiation/constants.hpp"
 #include "radiation/thermal_study.hpp"
 #include "radiation/wall_materials.hpp"
@@ -195,13 +196,32 @@ TEST(ThermalStudy, WallAndSizingFollowTheFlux) {
   EXPECT_EQ(std::count(sizing.begin(), sizing.end(), '\n'), 3);
 }
 
-TEST(ThermalStudy, UnitsAreParsed) {
-  EXPECT_DOUBLE_EQ(parseQuantity("10 km/s", Quantity::Speed), 1e4);
-  EXPECT_DOUBLE_EQ(parseQuantity("0.2 mm", Quantity::Length), 2e-4);
-  EXPECT_DOUBLE_EQ(parseQuantity("1 ms", Quantity::Time), 1e-3);
-  EXPECT_DOUBLE_EQ(parseQuantity("1500", Quantity::Temperature), 1500.0);
-  EXPECT_THROW(parseQuantity("10 km", Quantity::Speed), std::invalid_argument);
-  EXPECT_THROW(parseQuantity("fast", Quantity::Speed), std::invalid_argument);
+// A study reads its quantities with core's parser, the scenes' one: units only a scene took
+// before (compound, other prefixes, the Greek mu) give the value a scene gives.
+TEST(ThermalStudy, AcceptsEveryUnitASceneAccepts) {
+  const std::string approach = "speed = \"3.6e7 m/ks\"\ntarget = [0.0, 0.0, 0.0]\n"
+                               "duration = \"1500 \xCE\xBCs\"\nsamples = 2\n";
+  const std::string rest =
+      "[emitters]\nmin_temperature = \"1.5e3 K\"\n"
+      "[[walls]]\nlayers = [{ material = \"aluminium\", thickness = \"3e6 nm\" }]\n"
+      "[wall]\ntime_step = \"5e3 ns\"\n"
+      "[sizing]\ncoatings = [\"tungsten\"]\nmax_thickness = \"2e-6 km\"\n"
+      "[baseline]\nlength = \"4e11 pm\"\n";
+  const ThermalStudy s = parseThermalStudy(studyText(1.0, approach, rest), "units.toml", ".");
+  EXPECT_DOUBLE_EQ(vec3::norm(s.approach.velocity), parseQuantity("3.6e7 m/ks", Dimension::Velocity));
+  EXPECT_DOUBLE_EQ(vec3::norm(s.approach.velocity), 3.6e4);
+  EXPECT_EQ(s.approach.duration, parseQuantity("1500 \xCE\xBCs", Dimension::Time));
+  EXPECT_DOUBLE_EQ(s.approach.duration, 1.5e-3);
+  EXPECT_DOUBLE_EQ(s.emitters.minTemperature, 1500.0);
+  ASSERT_EQ(s.walls.size(), 1u);
+  EXPECT_EQ(s.walls[0].layers[0].thickness, parseQuantity("3e6 nm", Dimension::Length));
+  EXPECT_DOUBLE_EQ(s.walls[0].layers[0].thickness, 3e-3);
+  EXPECT_EQ(s.timeStep, parseQuantity("5e3 ns", Dimension::Time));
+  EXPECT_DOUBLE_EQ(s.timeStep, 5e-6);
+  EXPECT_EQ(s.sizing.maxThickness, parseQuantity("2e-6 km", Dimension::Length));
+  EXPECT_DOUBLE_EQ(s.sizing.maxThickness, 2e-3);
+  EXPECT_EQ(s.baseline.receiverSide, parseQuantity("4e11 pm", Dimension::Length));
+  EXPECT_DOUBLE_EQ(s.baseline.receiverSide, 0.4);
 }
 
 void expectError(const std::string& text, const std::string& expected) {
@@ -219,7 +239,9 @@ TEST(ThermalStudy, BadStudyFilesNameFileLineAndKey) {
   expectError("[spacecraft]\nshape = \"box\"\n", "bad.toml:1: key 'approach': required");
   expectError(ok + "colour = 3\n", "bad.toml:5: key 'approach.colour': unknown key");
   expectError("[approach]\nstart = [0.0, 5.0, 0.0]\nspeed = \"1 km\"\nduration = \"1 ms\"\n",
-              "bad.toml:3: key 'approach.speed': unknown unit 'km'");
+              "bad.toml:3: key 'approach.speed': expected a velocity (m/s), got a length (m) in '1 km'");
+  expectError("[approach]\nstart = [0.0, 5.0, 0.0]\nspeed = \"1 furlong/s\"\nduration = \"1 ms\"\n",
+              "bad.toml:3: key 'approach.speed': unknown unit 'furlong'");
   expectError("[approach]\nstart = [0.0, 5.0, 0.0]\nspeed = \"1 km/s\"\nduration = -1.0\n",
               "bad.toml:4: key 'approach.duration': must be > 0");
   expectError(ok + "[[walls]]\nlayers = [{ material = \"unobtainium\", thickness = \"1 mm\" }]\n",

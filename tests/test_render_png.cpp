@@ -9,7 +9,7 @@
 #include <random>
 #include <string>
 
-#include "render/atomic_write.hpp"
+#include "core/atomic_file.hpp"
 #include "render/frame_names.hpp"
 #include "render/png_io.hpp"
 

@@ -17,10 +17,10 @@
 #include <string>
 #include <vector>
 
-#include "sim/io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 #include "sim/io/snapshot.hpp"
-#include "sim/run/summary.hpp"
 #include "sim/io/xdmf.hpp"
+#include "sim/run/summary.hpp"
 
 namespace fs = std::filesystem;
 using namespace ejecta;

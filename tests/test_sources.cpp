@@ -224,7 +224,7 @@ TEST(DirectEnergyDeposition, BodyDepositLandsTheYieldUniformlyInTheDevice) {
   const Scene scene = parseScene(burstScene("ded", 0.5), "ded.toml");
   ASSERT_EQ(scene.deposits.size(), 1u);
   EXPECT_EQ(scene.deposits[0].body, 0);
-  // "0.1 t" as an energy is a tenth of a ton of TNT: 4.184e8 J (sim/setup/units.cpp).
+  // "0.1 t" as an energy is a tenth of a ton of TNT: 4.184e8 J (core/units.cpp).
   EXPECT_DOUBLE_EQ(scene.deposits[0].energy, 4.184e8);
   const MaterialTable materials = MaterialTable::fromScene(scene);
   const ParticleSet p = buildParticles(scene, materials);

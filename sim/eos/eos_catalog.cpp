@@ -5,11 +5,11 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/input_error.hpp"
 #include "sim/eos/jwl.hpp"
 #include "sim/eos/mie_gruneisen.hpp"
-#include "sim/setup/scene_error.hpp"
-#include "sim/solid/material_spec.hpp"
 #include "sim/eos/tillotson.hpp"
+#include "sim/solid/material_spec.hpp"
 
 namespace ejecta {
 

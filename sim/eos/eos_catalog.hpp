@@ -7,8 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/units.hpp"
 #include "sim/eos/eos.hpp"
-#include "sim/setup/units.hpp"
 
 namespace ejecta {
 

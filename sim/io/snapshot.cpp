@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "sim/io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 #include "sim/io/hdf5_io.hpp"
 #include "sim/state/builtin_fields.hpp"
 

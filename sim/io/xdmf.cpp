@@ -4,7 +4,7 @@
 #include <sstream>
 #include <string_view>
 
-#include "sim/io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 namespace ejecta {
 

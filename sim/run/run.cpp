@@ -14,14 +14,14 @@
 #include <algorithm>
 #include <sstream>
 
-#include "sim/io/atomic_file.hpp"
-#include "sim/setup/bodies.hpp"
+#include "core/atomic_file.hpp"
+#include "sim/io/snapshot.hpp"
+#include "sim/io/xdmf.hpp"
 #include "sim/run/energy_ledger.hpp"
+#include "sim/setup/bodies.hpp"
 #include "sim/sources/gauge_decay.hpp"
 #include "sim/sources/gauges.hpp"
 #include "sim/sph/kernel.hpp"
-#include "sim/io/snapshot.hpp"
-#include "sim/io/xdmf.hpp"
 
 namespace fs = std::filesystem;
 

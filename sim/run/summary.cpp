@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 #include "sim/io/snapshot.hpp"
 
 namespace ejecta {

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "core/units.hpp"
 #include "sim/eos/jwl.hpp"
 #include "sim/sources/programmed_burn.hpp"
 #include "sim/state/tensor.hpp"
-#include "sim/setup/units.hpp"
 
 namespace ejecta {
 

@@ -9,10 +9,10 @@
 #include <utility>
 #include <vector>
 
+#include "core/input_error.hpp"
 #include "sim/io/output_options.hpp"
 #include "sim/run/time_options.hpp"
 #include "sim/setup/body_spec.hpp"
-#include "sim/setup/scene_error.hpp"
 #include "sim/solid/material_spec.hpp"
 #include "sim/sources/gauges.hpp"
 #include "sim/sources/source_specs.hpp"

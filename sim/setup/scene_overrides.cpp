@@ -5,6 +5,7 @@
 #include <set>
 #include <string>
 
+#include "core/json.hpp"
 #include "sim/setup/scene_sections.hpp"
 
 namespace ejecta::scene_detail {
@@ -65,18 +66,8 @@ toml::table parseOverrideValue(const std::string& text, const std::string& label
   } catch (const toml::parse_error&) {
     // not a TOML value: fall through to a string
   }
-  std::string quoted = "\"";
-  for (char c : text) {
-    if (static_cast<unsigned char>(c) < 0x20) {  // control characters must be escaped
-      static constexpr char kHex[] = "0123456789abcdef";
-      quoted += std::string("\\u00") + kHex[(c >> 4) & 0xF] + kHex[c & 0xF];
-      continue;
-    }
-    if (c == '"' || c == '\\') quoted += '\\';
-    quoted += c;
-  }
-  quoted += '"';
-  return toml::parse("v = " + quoted, label);
+  // A JSON string literal is a TOML basic string too (the same escapes: \" \\ \n \uXXXX).
+  return toml::parse("v = " + jsonString(text), label);
 }
 
 }  // namespace

@@ -15,8 +15,8 @@
 #include <utility>
 #include <vector>
 
-#include "sim/setup/scene_error.hpp"
-#include "sim/setup/units.hpp"
+#include "core/input_error.hpp"
+#include "core/units.hpp"
 
 namespace ejecta::scene_detail {
 

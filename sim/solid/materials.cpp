@@ -4,8 +4,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/input_error.hpp"
 #include "sim/eos/eos_catalog.hpp"
-#include "sim/setup/scene_error.hpp"
 #include "sim/solid/material_spec.hpp"
 
 namespace ejecta {

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/input_error.hpp"
 #include "sim/eos/jwl.hpp"
-#include "sim/setup/scene_error.hpp"
 
 namespace ejecta {
 

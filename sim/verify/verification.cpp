@@ -7,14 +7,14 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "sim/io/atomic_file.hpp"
-#include "sim/setup/embedded_scenes.hpp"
+#include "core/atomic_file.hpp"
+#include "sim/eos/mie_gruneisen.hpp"
 #include "sim/exact/radial_euler.hpp"
 #include "sim/exact/riemann.hpp"
 #include "sim/exact/sedov.hpp"
-#include "sim/eos/mie_gruneisen.hpp"
 #include "sim/run/run.hpp"
 #include "sim/setup/bodies.hpp"
+#include "sim/setup/embedded_scenes.hpp"
 #include "sim/solid/materials.hpp"
 #include "sim/verify/runner.hpp"
 

@@ -1,4 +1,4 @@
-#include "sim/io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>

@@ -1,8 +1,9 @@
-#include "sim/setup/units.hpp"
+#include "core/units.hpp"
 
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <sstream>
 
@@ -16,12 +17,13 @@ struct NamedDimension {
   std::string_view unit;         // "kg/m^3"
 };
 
-constexpr std::array<NamedDimension, 15> kNamedDimensions{{
+constexpr std::array<NamedDimension, 16> kNamedDimensions{{
     {Dimension::None, "a plain number", ""},
     {Dimension::Length, "a length", "m"},
     {Dimension::Mass, "a mass", "kg"},
     {Dimension::Time, "a time", "s"},
     {Dimension::Temperature, "a temperature", "K"},
+    {Dimension::Angle, "an angle", "rad"},
     {Dimension::Velocity, "a velocity", "m/s"},
     {Dimension::Acceleration, "an acceleration", "m/s^2"},
     {Dimension::Density, "a density", "kg/m^3"},
@@ -51,8 +53,15 @@ struct UnitDef {
 // 1 t of TNT = 4.184e9 J (the conventional definition: 1 kt = 4.184e12 J, 1 Mt = 4.184e15 J).
 constexpr double kTonTnt = 4.184e9;
 constexpr double kTonne = 1e3;
+// 1 psi = 1 lbf/in^2 = 6894.757293168361 Pa, exact from the international pound-force and inch
+// (NIST SP 811 (2008), app. B.9); 1 ksi = 1000 psi.
+constexpr double kPsi = 6894.757293168361;
+constexpr double kKsi = 6.894757293168361e6;
+constexpr double kDegree = std::numbers::pi / 180.0;
+// 1 cc = 1 cm^3, as in "g/cc".
+constexpr double kCubicCentimetre = 1e-6;
 
-constexpr std::array<UnitDef, 12> kUnits{{
+constexpr std::array<UnitDef, 17> kUnits{{
     {"m", 1.0, Dimension::Length, true},
     {"g", 1e-3, Dimension::Mass, true},
     {"s", 1.0, Dimension::Time, true},
@@ -63,6 +72,11 @@ constexpr std::array<UnitDef, 12> kUnits{{
     {"atm", 101325.0, Dimension::Pressure, false},
     {"N", 1.0, Dimension::Force, true},
     {"W", 1.0, Dimension::Power, true},
+    {"psi", kPsi, Dimension::Pressure, false},
+    {"ksi", kKsi, Dimension::Pressure, false},
+    {"rad", 1.0, Dimension::Angle, true},
+    {"deg", kDegree, Dimension::Angle, false},
+    {"cc", kCubicCentimetre, Dimension::Volume, false},
     {"tonne", kTonne, Dimension::Mass, false},
     // "t": tonne or ton of TNT; the factor here is the mass reading, see resolveT below.
     {"t", kTonne, Dimension::Mass, true},
@@ -215,6 +229,7 @@ std::string siUnit(Dimension d) {
   term("m", d.length);
   term("s", d.time);
   term("K", d.temperature);
+  term("rad", d.angle);
   return out;
 }
 

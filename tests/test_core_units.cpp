@@ -1,9 +1,12 @@
-// Quantities with units: conversions to SI, the tonne / ton-of-TNT ambiguity, dimension errors.
+// Quantities with units (core/units, the parser of scenes, thermal studies and shield files):
+// conversions to SI, the tonne / ton-of-TNT ambiguity, angles, dimension errors.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
 #include <string>
 
-#include "sim/setup/units.hpp"
+#include "core/units.hpp"
 
 namespace ejecta {
 namespace {
@@ -63,6 +66,28 @@ TEST(Units, TonIsResolvedByTheExpectedDimension) {
   EXPECT_DOUBLE_EQ(parseQuantity("1 tonne", Dimension::Mass), 1000.0);
   EXPECT_DOUBLE_EQ(parseQuantity("1 t/m^3", Dimension::Density), 1000.0);
   EXPECT_THROW(parseQuantity("1 tonne", Dimension::Energy), UnitError);
+}
+
+TEST(Units, ShieldAndAngleUnits) {
+  // psi: NIST SP 811 (2008) app. B.9, 1 lbf/in^2 = 4.4482216152605 N / (0.0254 m)^2.
+  EXPECT_NEAR(parseQuantity("1 psi", Dimension::Pressure), 4.4482216152605 / (0.0254 * 0.0254),
+              1e-9);
+  EXPECT_DOUBLE_EQ(parseQuantity("37 ksi", Dimension::Pressure), 37 * 6.894757293168361e6);
+  EXPECT_DOUBLE_EQ(parseQuantity("2.8 g/cc", Dimension::Density), 2800.0);
+  EXPECT_DOUBLE_EQ(parseQuantity("1 cc", Dimension::Volume), 1e-6);
+  EXPECT_DOUBLE_EQ(parseQuantity("45 deg", Dimension::Angle), std::numbers::pi / 4);
+  EXPECT_DOUBLE_EQ(parseQuantity("0.5 rad", Dimension::Angle), 0.5);
+  EXPECT_DOUBLE_EQ(parseQuantity("3 mrad", Dimension::Angle), 3e-3);
+  EXPECT_DOUBLE_EQ(parseQuantity("2 rad/s", Dimension::Angle / Dimension::Time), 2.0);
+  EXPECT_DOUBLE_EQ(parseQuantity("0.7", Dimension::Angle), 0.7);  // a bare number: radians
+}
+
+TEST(Units, AnglesAreNotPlainNumbers) {
+  // A key that takes a plain number (fov_degrees) must not read "30 deg" as 0.52.
+  EXPECT_THROW(parseQuantity("30 deg", Dimension::None), UnitError);
+  EXPECT_THROW(parseQuantity("1 rad", Dimension::Length), UnitError);
+  EXPECT_EQ(describeDimension(Dimension::Angle), "an angle (rad)");
+  EXPECT_EQ(siUnit(Dimension::Angle / Dimension::Time), "s^-1 rad");
 }
 
 TEST(Units, CompoundUnitsReadLeftToRight) {
