@@ -5,9 +5,11 @@
 #include <string>
 
 #include "sim/setup/scene.hpp"
-#include "sim/setup/table_reader.hpp"
+#include "core/table_reader.hpp"
 
 namespace ejecta::scene_detail {
+
+using namespace ejecta::config;  // the shared TOML reader (core/table_reader.hpp)
 
 // The scene's schema, and the keys of one of its tables (nullptr: no such table).
 const SchemaTables& schemaTables();

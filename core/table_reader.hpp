@@ -1,8 +1,9 @@
 #pragma once
-// Typed, checked reading of a TOML document against a schema of allowed keys: every value in SI
-// (numbers or quantity strings, sim/setup/units.hpp), every message "FILE:LINE: key 'a.b':
-// reason" (SceneError). The scene reader's sections (sim/setup/scene_*.cpp) are built on it.
-// Internal to sim/setup/.
+// The one TOML input reader: typed, checked reading of a document against a schema of allowed
+// keys. Every value comes out in SI (numbers, or quantity strings read by core/units.hpp); every
+// message reads "FILE:LINE: key 'a.b': reason" and is thrown as the reader's InputError kind
+// (a scene's SceneError, a geometry file's GeometryFileError, ...). Scenes (sim/setup/scene_*.cpp),
+// geometry files, thermal studies and shield files are all read with it.
 #include <toml++/toml.h>
 
 #include <array>
@@ -18,7 +19,7 @@
 #include "core/input_error.hpp"
 #include "core/units.hpp"
 
-namespace ejecta::scene_detail {
+namespace ejecta::config {
 
 using KeyList = std::vector<std::string_view>;
 // Allowed keys by schema path ("bodies[]" = any element of [[bodies]]).
@@ -48,7 +49,7 @@ inline std::string typeName(const toml::node& n) {
   }
 }
 
-// Enum spellings in scene files.
+// Enum spellings in input files.
 template <typename E>
 using EnumNames = std::vector<std::pair<std::string_view, E>>;
 
@@ -60,11 +61,20 @@ inline std::string enumList(const EnumNames<E>& names) {
   return out;
 }
 
+template <typename Error>
+[[noreturn]] void raiseInputError(const std::string& message) {
+  throw Error(message);
+}
+
 // Where messages point. Values set by --set carry their own source name (see applyOverride).
 class Context {
  public:
-  Context(std::string sourceName, const toml::table& root, const SchemaTables& schema)
-      : source_(std::move(sourceName)), root_(&root), schema_(&schema) {}
+  // How a reader reports bad input: throws the reader's own InputError kind.
+  using Raise = void (*)(const std::string& message);
+
+  Context(std::string sourceName, const toml::table& root, const SchemaTables& schema,
+          Raise raise = &raiseInputError<SceneError>)
+      : source_(std::move(sourceName)), root_(&root), schema_(&schema), raise_(raise) {}
   const std::string& source() const { return source_; }
   // The keys allowed in the table at `schemaPath` ("bodies[]" = any element), or nullptr.
   const KeyList* allowedKeys(std::string_view schemaPath) const {
@@ -83,13 +93,15 @@ class Context {
 
   [[noreturn]] void fail(const toml::node* at, std::string_view key,
                          const std::string& reason) const {
-    throw SceneError(where(at) + ": key '" + std::string(key) + "': " + reason);
+    raise_(where(at) + ": key '" + std::string(key) + "': " + reason);
+    throw InputError("unreachable: Context::Raise returned");  // Raise must throw
   }
 
  private:
   std::string source_;
   const toml::table* root_;
   const SchemaTables* schema_;
+  Raise raise_;
 };
 
 // Typed, checked access to one table of a TOML input. Unknown keys are rejected on construction.
@@ -263,4 +275,4 @@ inline std::string nonNegativeMessage(double v, Dimension d) {
   return "must not be negative (got " + formatQuantity(v, d) + ")";
 }
 
-}  // namespace ejecta::scene_detail
+}  // namespace ejecta::config
