@@ -17,23 +17,27 @@
 #include <vector>
 
 #include "core/input_error.hpp"
+#include "core/schema.hpp"
 #include "core/units.hpp"
 
 namespace ejecta::config {
 
-using KeyList = std::vector<std::string_view>;
-// Allowed keys by schema path ("bodies[]" = any element of [[bodies]]).
+// Allowed keys by schema path ("bodies[]" = any element of [[bodies]]); each a KeySpec
+// (core/schema.hpp), which may be a bare name.
 using SchemaTables = std::map<std::string_view, KeyList>;
 
 inline bool contains(const KeyList& keys, std::string_view k) {
-  for (std::string_view a : keys)
-    if (a == k || a == "*") return true;
+  for (const KeySpec& a : keys)
+    if (a.name == k || a.name == "*") return true;
   return false;
 }
 
 inline std::string joinKeys(const KeyList& keys) {
   std::string out;
-  for (std::string_view k : keys) out += (out.empty() ? "" : ", ") + std::string(k);
+  for (const KeySpec& k : keys) {
+    if (!out.empty()) out += ", ";
+    out += k.name;
+  }
   return out;
 }
 

@@ -1,0 +1,38 @@
+#pragma once
+// The scene's schema: every table a scene may hold and, for each key, its kind, dimension (SI),
+// default, allowed values and doc. It is the one source of the reader's allowed keys (and so of
+// its unknown-key errors) and of the key reference in docs/scenes.md, which
+// sceneKeyReferenceMarkdown() generates (`ejecta keys --markdown`; tests compare the two).
+// The tables are written in scene_schema_*.cpp by section group, like the readers.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/table_reader.hpp"
+
+namespace ejecta {
+
+struct SceneTable {
+  std::string_view path;     // schema path: "sph.viscosity", "bodies[]"; "" = the document
+  std::string_view heading;  // its heading in the key reference; "" = not listed on its own
+  std::string_view summary;  // a line under the heading (may be empty)
+  config::KeyList keys;      // in the order the unknown-key message lists them
+};
+
+// Every table, in the order of the key reference.
+const std::vector<SceneTable>& sceneTables();
+// The same, by schema path, for the reader (core/table_reader.hpp).
+const config::SchemaTables& sceneSchema();
+
+// The key reference of docs/scenes.md, as Markdown: the tables of the schema, the eos parameters
+// of sim/eos/eos_catalog.hpp and the material models of sim/solid/model_keys.hpp.
+std::string sceneKeyReferenceMarkdown();
+
+namespace scene_schema_detail {
+std::vector<SceneTable> runTables();       // document, [scene], [domain], [sph], [time], [output]
+std::vector<SceneTable> outputTables();    // [fields], [crater], [images], [thermal]
+std::vector<SceneTable> materialTables();  // [[materials]] and its model tables
+std::vector<SceneTable> bodyTables();      // [[bodies]], [[energy_deposits]], [[detonations]], [[gauges]]
+}  // namespace scene_schema_detail
+
+}  // namespace ejecta
