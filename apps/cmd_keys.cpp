@@ -1,14 +1,27 @@
 // `ejecta keys`: the keys a scene may hold, from the scene's schema (sim/setup/scene_schema.hpp).
 // With --markdown, the key reference that docs/scenes.md holds between its markers.
 #include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "apps/commands.hpp"
+#include "core/atomic_file.hpp"
 #include "sim/setup/scene_schema.hpp"
 
 namespace ejecta::app {
 
 int keysCommand(const KeysArgs& args) {
+  if (!args.write.empty()) {
+    std::ifstream in(args.write, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot read " + args.write);
+    std::stringstream text;
+    text << in.rdbuf();
+    writeFileAtomically(args.write, withCurrentKeyReference(text.str()));
+    std::fprintf(stderr, "ejecta: %s: key reference regenerated\n", args.write.c_str());
+    return 0;
+  }
   if (args.markdown) {
     std::fputs(sceneKeyReferenceMarkdown().c_str(), stdout);
     return 0;

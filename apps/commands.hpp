@@ -121,6 +121,7 @@ int undexReferenceCommand(const UndexReferenceArgs& args);
 
 struct KeysArgs {
   bool markdown = false;               // the key reference of docs/scenes.md
+  std::string write;                   // rewrite the reference between this file's markers
 };
 int keysCommand(const KeysArgs& args);
 

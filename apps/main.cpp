@@ -121,6 +121,7 @@ int main(int argc, char** argv) {
   ejecta::app::KeysArgs keysArgs;
   CLI::App* keysCmd = app.add_subcommand("keys", "List every key a scene may hold, with its type, default and meaning");
   keysCmd->add_flag("--markdown", keysArgs.markdown, "The key reference of docs/scenes.md (Markdown)");
+  keysCmd->add_option("--write", keysArgs.write, "Replace the reference between the markers of this file (docs/scenes.md)");
 
   try {
     app.parse(argc, argv);

@@ -2,6 +2,7 @@
 // eos catalog and the material model families: `ejecta keys --markdown` prints it, and
 // tests/test_scene_key_reference.cpp checks that the doc holds exactly this text.
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include <toml++/toml.h>
@@ -129,10 +130,8 @@ std::vector<std::string> thermalLibraryNames() {
 
 std::string sceneKeyReferenceMarkdown() {
   std::ostringstream os;
-  os << "Generated from the schema (`sim/setup/scene_schema*.cpp`, `sim/eos/eos_catalog.cpp`, "
-        "`sim/solid/model_keys.cpp`) by `ejecta keys --markdown`: edit those, not this text. "
-        "Q = quantity: a number in SI or a string with units, [unit] its SI unit. A vector has "
-        "one entry per coordinate of the scene.\n";
+  os << "Q = quantity: a number in SI or a string with units, [unit] its SI unit. A vector has "
+        "one entry per coordinate of the scene (`[x]`, `[x, y]`, `[r, z]`, `[x, y, z]`).\n";
   for (const SceneTable& t : sceneTables()) {
     if (t.heading.empty()) continue;
     const bool model = t.path.rfind("materials[].", 0) == 0;
@@ -149,6 +148,37 @@ std::string sceneKeyReferenceMarkdown() {
     if (t.path == "materials[].fracture") modelTable(os, fractureModelFamily());
   }
   return os.str();
+}
+
+namespace {
+
+// Where the generated text lies in `doc`: [begin, end).
+std::pair<std::size_t, std::size_t> referenceSpan(const std::string& doc) {
+  const std::size_t b = doc.find(kKeyReferenceBegin);
+  const std::size_t e = doc.find(kKeyReferenceEnd);
+  if (b == std::string::npos || e == std::string::npos || e < b) {
+    std::string what = "no key reference markers (";
+    what += kKeyReferenceBegin;
+    what += " ... ";
+    what += kKeyReferenceEnd;
+    throw std::invalid_argument(what + ")");
+  }
+  return {b + kKeyReferenceBegin.size(), e};
+}
+
+}  // namespace
+
+std::string keyReferenceIn(const std::string& doc) {
+  const auto [b, e] = referenceSpan(doc);
+  std::string text = doc.substr(b, e - b);
+  const std::size_t first = text.find_first_not_of('\n');
+  const std::size_t last = text.find_last_not_of('\n');
+  return first == std::string::npos ? "" : text.substr(first, last - first + 1) + "\n";
+}
+
+std::string withCurrentKeyReference(const std::string& doc) {
+  const auto [b, e] = referenceSpan(doc);
+  return doc.substr(0, b) + "\n\n" + sceneKeyReferenceMarkdown() + "\n" + doc.substr(e);
 }
 
 }  // namespace ejecta

@@ -27,6 +27,15 @@ const config::SchemaTables& sceneSchema();
 // The key reference of docs/scenes.md, as Markdown: the tables of the schema, the eos parameters
 // of sim/eos/eos_catalog.hpp and the material models of sim/solid/model_keys.hpp.
 std::string sceneKeyReferenceMarkdown();
+// The markers around it in docs/scenes.md.
+inline constexpr std::string_view kKeyReferenceBegin =
+    "<!-- BEGIN GENERATED KEY REFERENCE (ejecta keys --markdown) -->";
+inline constexpr std::string_view kKeyReferenceEnd = "<!-- END GENERATED KEY REFERENCE -->";
+// The text between the markers of `doc` (without the blank lines next to them); throws
+// std::invalid_argument when a marker is missing.
+std::string keyReferenceIn(const std::string& doc);
+// `doc` with the text between its markers replaced by sceneKeyReferenceMarkdown().
+std::string withCurrentKeyReference(const std::string& doc);
 
 namespace scene_schema_detail {
 std::vector<SceneTable> runTables();       // document, [scene], [domain], [sph], [time], [output]

@@ -46,7 +46,8 @@ std::vector<SceneTable> bodyTables() {
        {text("name", "required", "unique"),
         text("material", "required", "a `[[materials]]` name"),
         choice("shape", {"box", "sphere", "shell", "half_space", "paraboloid"}, "required",
-               "`\"paraboloid\"`: void bodies only"),
+               "`\"box\"`, `\"sphere\"`, `\"shell\"`, `\"half_space\"`; `\"paraboloid\"` for "
+               "void bodies only (shapes: below)"),
         vectorOf("min", m, "box: required", "box: the lower corner"),
         vectorOf("max", m, "box: required", "box: the upper corner, > min per component"),
         vectorOf("center", m, "sphere, shell: required", "sphere, shell: the centre"),

@@ -16,7 +16,7 @@ std::vector<SceneTable> outputTables() {
                  "particle fields, `\"fractions\"` or `\"fraction_<material>\"`"),
         quantity("voxel", m, "0", "voxel size; 0 = the median smoothing length"),
         choice("normalise", {"auto", "shepard", "none"}, "\"auto\"",
-               "`\"auto\"`: Shepard except density and fractions"),
+               "`\"auto\"` (Shepard except density and fractions), `\"shepard\"` or `\"none\"`"),
         integer("every", "1", "grids with every Nth snapshot (and the last)"),
         boolean("level_set", "true", "add the `surface` level set"),
         quantity("extrude", m, "0", "2D planar only: slab depth; 0 = one voxel"),

@@ -28,10 +28,10 @@ const ModelFamily& thermalModelFamily() {
       {text("library", "the eos library's name",
             "thermal library entry (specific heat, melting point)"),
        quantity("specific_heat", kSpecificHeat, "library; ideal gas: R/((γ − 1) M)",
-                "specific heat c_v"),
+                "specific heat c_v [J/(kg K)]"),
        number("mean_atomic_mass", "—", "g/mol per atom: c_v = 3R/M (Dulong-Petit)"),
        number("molar_mass", "28.9644", "ideal gas: molar mass in g/mol (default: dry air)"),
-       quantity("initial_temperature", kKelvin, "293 K", "T0 at u = 0"),
+       quantity("initial_temperature", kKelvin, "\"293 K\"", "T0 at u = 0"),
        quantity("melt_temperature", kKelvin, "strength or thermal library; else never",
                 "strength vanishes at and above it")}};
   return family;
@@ -63,7 +63,7 @@ const ModelFamily& strengthModelFamily() {
         number("C", "required without a library", "Johnson-Cook strain-rate coefficient C"),
         number("m", "required without a library", "Johnson-Cook thermal-softening exponent m"),
         quantity("reference_strain_rate", kPerTime, "1", "Johnson-Cook ε̇0, > 0"),
-        quantity("room_temperature", kKelvin, "293 K", "Johnson-Cook T_room"),
+        quantity("room_temperature", kKelvin, "\"293 K\"", "Johnson-Cook T_room"),
         quantity("cohesion", kPa, "required for collins", "intact cohesion Y_0"),
         number("friction_intact", "required for collins", "intact friction coefficient μ_i, > 0"),
         quantity("strength_limit", kPa, "required for collins", "strength limit Y_M, > Y_0"),
