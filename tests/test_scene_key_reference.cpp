@@ -76,6 +76,11 @@ TEST(SceneKeyReference, EveryKeyIsDescribed) {
     EXPECT_FALSE(kind.doc.empty()) << kind.name;
     for (const EosParameter& p : kind.parameters) EXPECT_FALSE(p.doc.empty()) << p.key;
   }
+  for (const SceneShape& shape : sceneShapes()) {
+    EXPECT_FALSE(shape.doc.empty()) << shape.name;
+    for (std::string_view k : shape.keys)
+      EXPECT_NE(config::findKey(sceneSchema().at("bodies[]"), k), nullptr) << k;
+  }
   for (const ModelFamily* f : {&strengthModelFamily(), &fractureModelFamily()})
     for (const ModelKind& m : f->models) {
       EXPECT_FALSE(m.doc.empty()) << m.name;

@@ -146,6 +146,12 @@ std::string sceneKeyReferenceMarkdown() {
       os << "\nLibrary: " << joined(strengthLibraryNames()) << ".\n";
     }
     if (t.path == "materials[].fracture") modelTable(os, fractureModelFamily());
+    if (t.path == "bodies[]") {
+      os << "\n| shape | its keys | meaning |\n|---|---|---|\n";
+      for (const SceneShape& shape : sceneShapes())
+        os << "| " << shape.name << " | " << joined(shape.keys) << " | " << cell(shape.doc)
+           << " |\n";
+    }
   }
   return os.str();
 }

@@ -19,6 +19,16 @@ struct SceneTable {
   config::KeyList keys;      // in the order the unknown-key message lists them
 };
 
+// A shape of [[bodies]] and the keys it takes there (keys of another shape are errors).
+struct SceneShape {
+  std::string_view name;
+  std::vector<std::string_view> keys;
+  std::string_view doc;
+};
+// Every shape, in the order of the key reference ("paraboloid": void bodies only).
+const std::vector<SceneShape>& sceneShapes();
+const SceneShape& sceneShape(std::string_view name);  // throws std::out_of_range if none
+
 // Every table, in the order of the key reference.
 const std::vector<SceneTable>& sceneTables();
 // The same, by schema path, for the reader (core/table_reader.hpp).

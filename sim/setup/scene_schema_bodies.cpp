@@ -2,6 +2,8 @@
 // (scene_bodies.cpp), [[energy_deposits]], [[detonations]] and [[gauges]] (scene_sources.cpp).
 // The eos names come from sim/eos/eos_catalog.hpp and the model tables' keys from
 // sim/solid/model_keys.hpp; defaults are those of MaterialSpec, BodySpec and the source specs.
+#include <stdexcept>
+
 #include "sim/eos/eos_catalog.hpp"
 #include "sim/setup/scene_schema.hpp"
 #include "sim/solid/model_keys.hpp"
@@ -36,18 +38,21 @@ std::vector<SceneTable> materialTables() {
 }
 
 std::vector<SceneTable> bodyTables() {
+  std::vector<std::string_view> shapeNames;
+  for (const SceneShape& shape : sceneShapes()) shapeNames.push_back(shape.name);
   const Dimension m = Dimension::Length;
   const Dimension s = Dimension::Time;
   return {
       {"bodies[]",
        "`[[bodies]]` (at least one)",
        "Bodies are filled in order; earlier bodies win where shapes overlap. A shape takes its "
-       "own keys only (below).",
+       "own keys only (the table after the keys); a shape entirely outside the domain is an "
+       "error.",
        {text("name", "required", "unique"),
         text("material", "required", "a `[[materials]]` name"),
-        choice("shape", {"box", "sphere", "shell", "half_space", "paraboloid"}, "required",
+        choice("shape", shapeNames, "required",
                "`\"box\"`, `\"sphere\"`, `\"shell\"`, `\"half_space\"`; `\"paraboloid\"` for "
-               "void bodies only (shapes: below)"),
+               "void bodies only (the shapes' keys: below)"),
         vectorOf("min", m, "box: required", "box: the lower corner"),
         vectorOf("max", m, "box: required", "box: the upper corner, > min per component"),
         vectorOf("center", m, "sphere, shell: required", "sphere, shell: the centre"),
@@ -112,3 +117,32 @@ std::vector<SceneTable> bodyTables() {
 }
 
 }  // namespace ejecta::scene_schema_detail
+
+namespace ejecta {
+
+const std::vector<SceneShape>& sceneShapes() {
+  static const std::vector<SceneShape> shapes{
+      {"box", {"min", "max"}, "axis-aligned box, min < max per component"},
+      {"sphere", {"center", "radius"},
+       "ball; a disc in 2D and RZ (in RZ a sphere), a segment in 1D"},
+      {"shell", {"center", "inner_radius", "outer_radius"}, "inner ≤ |x − c| ≤ outer"},
+      {"half_space", {"point", "normal"},
+       "{x : (x − point)·normal ≤ 0}, clipped to the domain box; every domain axis must then be "
+       "bounded"},
+      {"paraboloid", {"point", "normal", "radius", "depth"},
+       "void bodies only: a crater's bowl, {x : s ≥ 0, ρ² ≤ radius²·s/depth} with s the height "
+       "above the floor along `normal` and ρ the distance from that axis; open above (a parabola "
+       "in 2D; in RZ the floor on the axis, `normal` = [0, ±1])"},
+  };
+  return shapes;
+}
+
+const SceneShape& sceneShape(std::string_view name) {
+  for (const SceneShape& s : sceneShapes())
+    if (s.name == name) return s;
+  std::string what = "no shape '";
+  what += name;
+  throw std::out_of_range(what + "' in the scene schema");
+}
+
+}  // namespace ejecta
