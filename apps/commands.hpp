@@ -119,6 +119,12 @@ struct UndexReferenceArgs {
 };
 int undexReferenceCommand(const UndexReferenceArgs& args);
 
+struct KeysArgs {
+  bool markdown = false;               // the key reference of docs/scenes.md
+  std::string write;                   // rewrite the reference between this file's markers
+};
+int keysCommand(const KeysArgs& args);
+
 // True when stderr is a terminal and CI is not set: show progress lines.
 bool interactive();
 

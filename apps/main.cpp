@@ -118,6 +118,11 @@ int main(int argc, char** argv) {
   undexCmd->add_option("--out,-o", undexArgs.outDir, "Output directory for gauges_reference.csv (default runs/<scene name>)");
   undexCmd->add_option("--set", undexArgs.overrides, "Override a scene key")->take_all();
 
+  ejecta::app::KeysArgs keysArgs;
+  CLI::App* keysCmd = app.add_subcommand("keys", "List every key a scene may hold, with its type, default and meaning");
+  keysCmd->add_flag("--markdown", keysArgs.markdown, "The key reference of docs/scenes.md (Markdown)");
+  keysCmd->add_option("--write", keysArgs.write, "Replace the reference between the markers of this file (docs/scenes.md)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -134,6 +139,7 @@ int main(int argc, char** argv) {
     if (*renderCmd) return ejecta::app::renderCommand(renderArgs);
     if (*whippleCmd) return ejecta::app::whippleCommand(whippleArgs);
     if (*undexCmd) return ejecta::app::undexReferenceCommand(undexArgs);
+    if (*keysCmd) return ejecta::app::keysCommand(keysArgs);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ejecta: error: %s\n", e.what());
     return 1;

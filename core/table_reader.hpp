@@ -11,29 +11,34 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
 #include "core/input_error.hpp"
+#include "core/schema.hpp"
 #include "core/units.hpp"
 
 namespace ejecta::config {
 
-using KeyList = std::vector<std::string_view>;
-// Allowed keys by schema path ("bodies[]" = any element of [[bodies]]).
+// Allowed keys by schema path ("bodies[]" = any element of [[bodies]]); each a KeySpec
+// (core/schema.hpp), which may be a bare name.
 using SchemaTables = std::map<std::string_view, KeyList>;
 
 inline bool contains(const KeyList& keys, std::string_view k) {
-  for (std::string_view a : keys)
-    if (a == k || a == "*") return true;
+  for (const KeySpec& a : keys)
+    if (a.name == k || a.name == "*") return true;
   return false;
 }
 
 inline std::string joinKeys(const KeyList& keys) {
   std::string out;
-  for (std::string_view k : keys) out += (out.empty() ? "" : ", ") + std::string(k);
+  for (const KeySpec& k : keys) {
+    if (!out.empty()) out += ", ";
+    out += k.name;
+  }
   return out;
 }
 
@@ -108,13 +113,17 @@ class Context {
 class TableReader {
  public:
   TableReader(const Context& ctx, const toml::table& tbl, std::string path, std::string schema)
-      : ctx_(ctx), tbl_(tbl), path_(std::move(path)) {
-    const KeyList* allowed = ctx_.allowedKeys(schema);
+      : ctx_(ctx), tbl_(tbl), path_(std::move(path)), allowed_(ctx_.allowedKeys(schema)) {
     for (auto&& [k, v] : tbl_) {
-      if (!allowed || !contains(*allowed, k.str()))
+      if (!allowed_ || !contains(*allowed_, k.str()))
         ctx_.fail(&v, key(k.str()),
-                  "unknown key; allowed keys here: " + (allowed ? joinKeys(*allowed) : "none"));
+                  "unknown key; allowed keys here: " + (allowed_ ? joinKeys(*allowed_) : "none"));
     }
+  }
+
+  // The key's spec in this table's schema, or nullptr.
+  const KeySpec* spec(std::string_view k) const {
+    return allowed_ ? findKey(*allowed_, k) : nullptr;
   }
 
   const toml::table& table() const { return tbl_; }
@@ -190,6 +199,13 @@ class TableReader {
   double requireQuantity(std::string_view k, Dimension dim) const {
     return quantityOf(require(k), key(k), dim);
   }
+  // The same, of the dimension the schema gives the key (a Quantity or Number KeySpec).
+  std::optional<double> optQuantity(std::string_view k) const {
+    return optQuantity(k, schemaDimension(k));
+  }
+  double requireQuantity(std::string_view k) const {
+    return requireQuantity(k, schemaDimension(k));
+  }
 
   // A vector with exactly `n` components (the scene's dimension); unused components are 0.
   std::optional<std::array<double, 3>> optVector(std::string_view k, Dimension dim, int n,
@@ -260,9 +276,21 @@ class TableReader {
   const Context& context() const { return ctx_; }
 
  private:
+  // A reader asking for a key its schema does not give a dimension is a bug, not bad input.
+  Dimension schemaDimension(std::string_view k) const {
+    const KeySpec* s = spec(k);
+    if (!s || (s->kind != KeyKind::Quantity && s->kind != KeyKind::Number)) {
+      std::string what = "schema: key '";
+      what += key(k);
+      throw std::logic_error(what + "' is not a quantity in its schema");
+    }
+    return s->dimension;
+  }
+
   const Context& ctx_;
   const toml::table& tbl_;
   std::string path_;
+  const KeyList* allowed_;
 };
 
 // The line a node starts on in its file.

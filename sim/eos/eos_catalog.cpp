@@ -21,47 +21,48 @@ struct Field {
   std::string_view key;
   Dimension dimension;
   double Params::*member;
+  std::string_view doc;
 };
 
 const std::vector<Field<TillotsonParameters>> kTillotsonFields{
-    {"rho0", Dimension::Density, &TillotsonParameters::rho0},
-    {"A", Dimension::Pressure, &TillotsonParameters::A},
-    {"B", Dimension::Pressure, &TillotsonParameters::B},
-    {"E0", Dimension::SpecificEnergy, &TillotsonParameters::E0},
-    {"Eiv", Dimension::SpecificEnergy, &TillotsonParameters::Eiv},
-    {"Ecv", Dimension::SpecificEnergy, &TillotsonParameters::Ecv},
-    {"a", Dimension::None, &TillotsonParameters::a},
-    {"b", Dimension::None, &TillotsonParameters::b},
-    {"alpha", Dimension::None, &TillotsonParameters::alpha},
-    {"beta", Dimension::None, &TillotsonParameters::beta},
+    {"rho0", Dimension::Density, &TillotsonParameters::rho0, "reference density ρ0"},
+    {"A", Dimension::Pressure, &TillotsonParameters::A, "linear compression coefficient A"},
+    {"B", Dimension::Pressure, &TillotsonParameters::B, "quadratic compression coefficient B"},
+    {"E0", Dimension::SpecificEnergy, &TillotsonParameters::E0, "reference specific energy E0"},
+    {"Eiv", Dimension::SpecificEnergy, &TillotsonParameters::Eiv, "specific energy of incipient vaporisation"},
+    {"Ecv", Dimension::SpecificEnergy, &TillotsonParameters::Ecv, "specific energy of complete vaporisation"},
+    {"a", Dimension::None, &TillotsonParameters::a, "Tillotson a"},
+    {"b", Dimension::None, &TillotsonParameters::b, "Tillotson b"},
+    {"alpha", Dimension::None, &TillotsonParameters::alpha, "decay constant α of the expanded branch (density)"},
+    {"beta", Dimension::None, &TillotsonParameters::beta, "decay constant β of the expanded branch (pressure)"},
 };
 
 const std::vector<Field<ShockMaterial>> kShockFields{
-    {"rho0", Dimension::Density, &ShockMaterial::rho0},
-    {"c0", Dimension::Velocity, &ShockMaterial::c0},
-    {"s1", Dimension::None, &ShockMaterial::s1},
-    {"s2", Dimension::None, &ShockMaterial::s2},
-    {"s3", Dimension::None, &ShockMaterial::s3},
-    {"gamma0", Dimension::None, &ShockMaterial::gamma0},
-    {"a", Dimension::None, &ShockMaterial::a},
+    {"rho0", Dimension::Density, &ShockMaterial::rho0, "reference density ρ0"},
+    {"c0", Dimension::Velocity, &ShockMaterial::c0, "bulk sound speed, intercept of the Us-up fit"},
+    {"s1", Dimension::None, &ShockMaterial::s1, "linear slope of the Us-up fit"},
+    {"s2", Dimension::None, &ShockMaterial::s2, "quadratic coefficient (of up²/Us)"},
+    {"s3", Dimension::None, &ShockMaterial::s3, "cubic coefficient (of up³/Us²)"},
+    {"gamma0", Dimension::None, &ShockMaterial::gamma0, "Grüneisen coefficient Γ0 at ρ0"},
+    {"a", Dimension::None, &ShockMaterial::a, "first-order volume correction to Γ0"},
 };
 
 const std::vector<Field<JwlParams>> kJwlFields{
-    {"rho0", Dimension::Density, &JwlParams::rho0},
-    {"A", Dimension::Pressure, &JwlParams::A},
-    {"B", Dimension::Pressure, &JwlParams::B},
-    {"R1", Dimension::None, &JwlParams::R1},
-    {"R2", Dimension::None, &JwlParams::R2},
-    {"omega", Dimension::None, &JwlParams::omega},
-    {"E0", Dimension::Pressure, &JwlParams::E0},  // detonation energy per unit volume [J/m^3]
-    {"D_cj", Dimension::Velocity, &JwlParams::dCJ},
-    {"P_cj", Dimension::Pressure, &JwlParams::pCJ},
+    {"rho0", Dimension::Density, &JwlParams::rho0, "unreacted explosive density ρ0"},
+    {"A", Dimension::Pressure, &JwlParams::A, "JWL A"},
+    {"B", Dimension::Pressure, &JwlParams::B, "JWL B"},
+    {"R1", Dimension::None, &JwlParams::R1, "JWL R1"},
+    {"R2", Dimension::None, &JwlParams::R2, "JWL R2"},
+    {"omega", Dimension::None, &JwlParams::omega, "Grüneisen coefficient ω of the products"},
+    {"E0", Dimension::Pressure, &JwlParams::E0, "detonation energy per unit initial volume [J/m^3]; e0 = E0/ρ0"},
+    {"D_cj", Dimension::Velocity, &JwlParams::dCJ, "Chapman-Jouguet detonation velocity"},
+    {"P_cj", Dimension::Pressure, &JwlParams::pCJ, "Chapman-Jouguet pressure"},
 };
 
 template <typename Params>
 std::vector<EosParameter> parameterList(const std::vector<Field<Params>>& fields) {
   std::vector<EosParameter> out;
-  for (const auto& f : fields) out.push_back({f.key, f.dimension});
+  for (const auto& f : fields) out.push_back({f.key, f.dimension, f.doc});
   return out;
 }
 
@@ -101,17 +102,27 @@ Params assemble(const MaterialSpec& spec, const std::vector<Field<Params>>& fiel
 
 const std::vector<EosKind>& eosKinds() {
   static const std::vector<EosKind> kinds = {
-      {"ideal_gas", {{"gamma", Dimension::None}}, {}},
+      {"ideal_gas",
+       // Accepted here but not read by makeEquationOfState (it takes MaterialSpec::gamma).
+       {{"gamma", Dimension::None,
+         "accepted but not used: the adiabatic index is the material's own `gamma` key"}},
+       {},
+       "ideal gas, P = (γ − 1) ρ u"},
       {"tillotson",
        [] {
          // Not an EOS constant but its tension cut-off (TillotsonOptions::minimumPressure).
          std::vector<EosParameter> list = parameterList(kTillotsonFields);
-         list.push_back({"minimum_pressure", Dimension::Pressure});
+         list.push_back({"minimum_pressure", Dimension::Pressure,
+                         "pressures below it are clamped to it (default: no floor, the cold "
+                         "branch keeps its tension)"});
          return list;
        }(),
-       tillotsonLibraryNames()},
-      {"mie_gruneisen", parameterList(kShockFields), shockMaterialNames()},
-      {"jwl", parameterList(kJwlFields), jwlExplosiveNames()},
+       tillotsonLibraryNames(),
+       "Tillotson (1962), solids and their vapour: `docs/eos_tillotson.md`"},
+      {"mie_gruneisen", parameterList(kShockFields), shockMaterialNames(),
+       "Mie-Grüneisen on a Us-up shock fit: `docs/eos_shock_jwl.md`"},
+      {"jwl", parameterList(kJwlFields), jwlExplosiveNames(),
+       "JWL detonation products: `docs/eos_shock_jwl.md`"},
   };
   return kinds;
 }

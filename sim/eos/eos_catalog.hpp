@@ -17,12 +17,14 @@ struct MaterialSpec;
 struct EosParameter {
   std::string_view key;   // as written in [materials.parameters]
   Dimension dimension;    // what a quantity string must reduce to
+  std::string_view doc;   // one line, for the key reference (docs/scenes.md)
 };
 
 struct EosKind {
   std::string_view name;                // "ideal_gas", "tillotson", "mie_gruneisen", "jwl", ...
   std::vector<EosParameter> parameters; // every key [materials.parameters] may hold
   std::vector<std::string> libraryNames;
+  std::string_view doc;                 // one line: what it models, where it is documented
 };
 
 const std::vector<EosKind>& eosKinds();

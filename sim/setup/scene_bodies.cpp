@@ -5,6 +5,7 @@
 #include <set>
 #include <string>
 
+#include "sim/setup/scene_schema.hpp"
 #include "sim/setup/scene_sections.hpp"
 
 namespace ejecta::scene_detail {
@@ -36,11 +37,15 @@ void readShape(const TableReader& r, const Scene& scene, ShapeSpec& shape) {
                                             {"sphere", ShapeKind::Sphere},
                                             {"shell", ShapeKind::Shell},
                                             {"half_space", ShapeKind::HalfSpace}};
-  static const std::map<ShapeKind, KeyList> kShapeKeys{
-      {ShapeKind::Box, {"min", "max"}},
-      {ShapeKind::Sphere, {"center", "radius"}},
-      {ShapeKind::Shell, {"center", "inner_radius", "outer_radius"}},
-      {ShapeKind::HalfSpace, {"point", "normal"}}};
+  // Each shape's keys, from the schema (scene_schema_bodies.cpp).
+  static const std::map<ShapeKind, KeyList> kShapeKeys = [] {
+    std::map<ShapeKind, KeyList> keys;
+    for (const auto& [name, kind] : kShapes) {
+      const std::vector<std::string_view>& own = sceneShape(name).keys;
+      keys[kind] = KeyList(own.begin(), own.end());
+    }
+    return keys;
+  }();
   r.require("shape");
   shape.kind = *r.optEnum("shape", kShapes);
   const std::string shapeName = r.table().get("shape")->value<std::string>().value_or("");
@@ -121,9 +126,14 @@ namespace {
 // A paraboloid bowl (void bodies only): floor = `point`, opening along `normal`, `radius` wide at
 // `depth` above the floor.
 void readBowl(const TableReader& r, const Scene& scene, BowlSpec& bowl) {
-  for (std::string_view k : {"min", "max", "center", "inner_radius", "outer_radius"})
-    if (r.has(k)) r.fail(k, "not used by shape 'paraboloid' (it takes point, normal, radius, depth)");
-  for (std::string_view k : {"point", "normal", "radius", "depth"}) r.require(k);
+  // The keys of the other shapes are errors (scene_schema_bodies.cpp).
+  const SceneShape& bowlShape = sceneShape("paraboloid");
+  const KeyList own(bowlShape.keys.begin(), bowlShape.keys.end());
+  for (const SceneShape& other : sceneShapes())
+    for (std::string_view k : other.keys)
+      if (r.has(k) && !contains(own, k))
+        r.fail(k, "not used by shape 'paraboloid' (it takes " + joinKeys(own) + ")");
+  for (std::string_view k : own) r.require(k);
   const int dim = spatialDimension(scene.geometry);
   const std::string layout = vectorLayout(scene.geometry);
   const Dimension m = Dimension::Length;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "sim/eos/eos_catalog.hpp"
+#include "sim/solid/model_keys.hpp"
 #include "sim/setup/scene_sections.hpp"
 
 namespace ejecta::scene_detail {
@@ -18,80 +19,43 @@ void checkUniqueName(const TableReader& r, std::set<std::string>& seen, const st
 
 namespace {
 
-// Keys of a material's model tables and what each must measure; string keys are handled apart.
-struct ModelKey {
-  std::string_view key;
-  Dimension dimension;
-};
-const Dimension kPerVolume{0, -3, 0, 0};
-const Dimension kPerTime{0, 0, -1, 0};
-const Dimension kSpecificHeat{0, 2, -2, -1};
-
-void readModelTable(const TableReader& material, std::string_view name,
-                    const std::vector<ModelKey>& keys, const std::vector<std::string_view>& models,
-                    ModelSpec& out) {
+// A material's model table, read by its family's key specs (sim/solid/model_keys.hpp): the model
+// name, the library entry, and every number in SI by key.
+void readModelTable(const TableReader& material, const ModelFamily& family, ModelSpec& out) {
+  const std::string_view name = family.table;
   const toml::table* t = material.optTable(name);
   if (!t) return;
   const TableReader r(material.context(), *t, material.key(name),
                       "materials[]." + std::string(name));
   out.present = true;
   out.line = lineOf(*t);
-  if (!models.empty()) {
+  if (!family.models.empty()) {
     EnumNames<std::string> names;
-    for (std::string_view m : models) names.push_back({m, std::string(m)});
+    for (const ModelKind& m : family.models) names.push_back({m.name, std::string(m.name)});
     const std::optional<std::string> model = r.optEnum<std::string>("model", names);
     if (!model) r.fail("model", "required key is missing; one of " + enumList(names));
     out.model = *model;
   }
   out.library = r.optString("library").value_or("");
-  for (const ModelKey& k : keys) {
-    if (k.key == "seed") {
-      if (const std::optional<long> seed = r.optInteger("seed")) {
-        r.check(*seed >= 0, "seed", "must not be negative");
-        out.values.emplace_back("seed", static_cast<double>(*seed));
+  for (const KeySpec& k : family.keys) {
+    if (k.kind == KeyKind::Integer) {
+      if (const std::optional<long> v = r.optInteger(k.name)) {
+        r.check(*v >= 0, k.name, "must not be negative");
+        out.values.emplace_back(std::string(k.name), static_cast<double>(*v));
       }
-      continue;
-    }
-    if (const std::optional<double> v = r.optQuantity(k.key, k.dimension)) {
-      r.check(*v >= 0.0, k.key, nonNegativeMessage(*v, k.dimension));
-      out.values.emplace_back(std::string(k.key), *v);
+    } else if (k.kind == KeyKind::Quantity || k.kind == KeyKind::Number) {
+      if (const std::optional<double> v = r.optQuantity(k.name, k.dimension)) {
+        r.check(*v >= 0.0, k.name, nonNegativeMessage(*v, k.dimension));
+        out.values.emplace_back(std::string(k.name), *v);
+      }
     }
   }
 }
 
 void readMaterialModels(const TableReader& r, MaterialSpec& m) {
-  readModelTable(r, "thermal",
-                 {{"specific_heat", kSpecificHeat},
-                  {"mean_atomic_mass", Dimension::None},
-                  {"molar_mass", Dimension::None},
-                  {"initial_temperature", Dimension::Temperature},
-                  {"melt_temperature", Dimension::Temperature}},
-                 {}, m.thermal);
-  readModelTable(r, "strength",
-                 {{"shear_modulus", Dimension::Pressure},
-                  {"yield_stress", Dimension::Pressure},
-                  {"A", Dimension::Pressure},
-                  {"B", Dimension::Pressure},
-                  {"n", Dimension::None},
-                  {"C", Dimension::None},
-                  {"m", Dimension::None},
-                  {"reference_strain_rate", kPerTime},
-                  {"room_temperature", Dimension::Temperature},
-                  {"cohesion", Dimension::Pressure},
-                  {"friction_intact", Dimension::None},
-                  {"strength_limit", Dimension::Pressure},
-                  {"friction_damaged", Dimension::None},
-                  {"cohesion_damaged", Dimension::Pressure}},
-                 {"elastic", "von_mises", "johnson_cook", "collins"}, m.strength);
-  readModelTable(r, "fracture",
-                 {{"weibull_k", kPerVolume},
-                  {"weibull_m", Dimension::None},
-                  {"tensile_strength", Dimension::Pressure},
-                  {"erosion_strain", Dimension::None},
-                  {"crack_speed_factor", Dimension::None},
-                  {"max_crack_increment", Dimension::None},
-                  {"seed", Dimension::None}},
-                 {"none", "grady_kipp", "principal_stress"}, m.fracture);
+  readModelTable(r, thermalModelFamily(), m.thermal);
+  readModelTable(r, strengthModelFamily(), m.strength);
+  readModelTable(r, fractureModelFamily(), m.fracture);
 }
 
 }  // namespace

@@ -159,11 +159,11 @@ void readTime(const TableReader& root, TimeOptions& time) {
   if (!t) root.fail("time", "required table [time] is missing (it must give t_end)");
   const TableReader r(root.context(), *t, "time", "time");
   const Dimension s = Dimension::Time;
-  time.tEnd = r.requireQuantity("t_end", s);
+  time.tEnd = r.requireQuantity("t_end");  // dimensions from the schema
   r.check(time.tEnd > 0.0, "t_end", positiveMessage(time.tEnd, s));
-  time.dtMax = r.optQuantity("dt_max", s).value_or(time.dtMax);
+  time.dtMax = r.optQuantity("dt_max").value_or(time.dtMax);
   r.check(time.dtMax >= 0.0, "dt_max", nonNegativeMessage(time.dtMax, s) + "; 0 = unlimited");
-  time.dtMin = r.optQuantity("dt_min", s).value_or(time.dtMin);
+  time.dtMin = r.optQuantity("dt_min").value_or(time.dtMin);
   r.check(time.dtMin >= 0.0, "dt_min", nonNegativeMessage(time.dtMin, s));
   if (time.dtMax > 0.0) r.check(time.dtMin < time.dtMax, "dt_min", "must be below dt_max");
   time.maxSteps = r.optInteger("max_steps").value_or(time.maxSteps);
@@ -174,7 +174,7 @@ void readOutput(const TableReader& root, OutputOptions& out) {
   const toml::table* t = root.optTable("output");
   if (!t) return;
   const TableReader r(root.context(), *t, "output", "output");
-  out.snapshotInterval = r.optQuantity("snapshot_interval", Dimension::Time).value_or(0.0);
+  out.snapshotInterval = r.optQuantity("snapshot_interval").value_or(0.0);
   r.check(out.snapshotInterval >= 0.0, "snapshot_interval",
           nonNegativeMessage(out.snapshotInterval, Dimension::Time) + "; 0 = first and last only");
   out.snapshots = r.optBool("snapshots").value_or(out.snapshots);
