@@ -25,10 +25,10 @@ std::string readInputFile(const fs::path& path, const std::string& what, config:
   return text.str();
 }
 
-const toml::table& tableOrEmpty(const TableReader& t, std::string_view k) {
+TableReader subTable(const TableReader& t, std::string_view k) {
   static const toml::table empty;
   const toml::table* sub = t.optTable(k);
-  return sub ? *sub : empty;
+  return TableReader(t.context(), sub ? *sub : empty, t.key(k), t.key(k));
 }
 
 Vec3 vec3At(const TableReader& t, const toml::node& n, const std::string& fullKey, Dimension dim) {

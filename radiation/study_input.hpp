@@ -23,8 +23,9 @@ toml::table parseToml(const std::string& text, const std::string& source, config
 std::string readInputFile(const std::filesystem::path& path, const std::string& what,
                           config::Context::Raise raise);
 
-// The table at `k` of `t`, or an empty one when the key is absent (its defaults apply).
-const toml::table& tableOrEmpty(const TableReader& t, std::string_view k);
+// The table at `k` of `t` (empty when the key is absent: its defaults apply), read against the
+// schema entry named `k` (a top-level table).
+TableReader subTable(const TableReader& t, std::string_view k);
 
 // [x, y, z], each a number (SI) or a quantity string of dimension `dim`.
 std::optional<Vec3> optVec3(const TableReader& t, std::string_view k, Dimension dim);

@@ -42,11 +42,6 @@ const config::SchemaTables& studySchema() {
 
 constexpr auto kRaise = &config::raiseInputError<ThermalStudyError>;
 
-// The table `k` of `parent` (empty when absent: its defaults apply), checked against `k`'s keys.
-TableReader sub(const TableReader& parent, std::string_view k) {
-  return TableReader(parent.context(), tableOrEmpty(parent, k), std::string(k), std::string(k));
-}
-
 void readSpacecraft(const TableReader& t, ThermalStudy& s, const fs::path& base, const Vec3& flight) {
   s.spacecraft.body = readShape(t, ShapeRole::StudyBody, base);
   // side0 (body +x) leads: by default it points along the flight, towards the crater.
@@ -185,30 +180,30 @@ ThermalStudy parseThermalStudy(const std::string& tomlText, const std::string& s
   ThermalStudy s;
   s.source = sourceName;
   const TableReader top(ctx, root, "", "");
-  const TableReader study = sub(top, "study");
+  const TableReader study = subTable(top, "study");
   s.name = study.optString("name").value_or(fs::path(sourceName).stem().string());
   s.description = study.optString("description").value_or("");
   if (!top.has("approach")) top.fail("approach", "required: the spacecraft's pass ([approach])");
-  readApproach(sub(top, "approach"), s.approach);
+  readApproach(subTable(top, "approach"), s.approach);
   const Vec3 flight = vec3::norm(s.approach.velocity) > 0.0 ? vec3::normalized(s.approach.velocity) : Vec3{1, 0, 0};
-  readSpacecraft(sub(top, "spacecraft"), s, baseDirectory, flight);
+  readSpacecraft(subTable(top, "spacecraft"), s, baseDirectory, flight);
   s.spacecraft.pose.position = s.approach.start;
   s.spacecraft.pose.velocity = s.approach.velocity;
   s.spacecraft.times = s.approach.times();
-  readEmitters(sub(top, "emitters"), s.emitters);
+  readEmitters(subTable(top, "emitters"), s.emitters);
   const auto walls = top.tableArray("walls");
   for (std::size_t i = 0; i < walls.size(); ++i)
     s.walls.push_back(readWall(TableReader(ctx, *walls[i], "walls[" + std::to_string(i) + "]", "walls[]")));
-  const TableReader wall = sub(top, "wall");
+  const TableReader wall = subTable(top, "wall");
   s.initialTemperature = optPositive(wall, "initial_temperature", Dimension::Temperature, s.initialTemperature);
   s.timeStep = optPositive(wall, "time_step", Dimension::Time, 0.0);
-  readLimit(sub(top, "limit"), s.limit);
-  const TableReader sizing = sub(top, "sizing");
+  readLimit(subTable(top, "limit"), s.limit);
+  const TableReader sizing = subTable(top, "sizing");
   readSizing(sizing, s.sizing);
   if (!s.sizing.coatings.empty() && s.walls.empty())
     sizing.fail("coatings", "sizing needs a structure: give [[walls]] (its last layer is the structure)");
-  readSampling(sub(top, "sampling"), s.sampling);
-  s.baseline.receiverSide = optPositive(sub(top, "baseline"), "length", Dimension::Length, 0.0);
+  readSampling(subTable(top, "sampling"), s.sampling);
+  s.baseline.receiverSide = optPositive(subTable(top, "baseline"), "length", Dimension::Length, 0.0);
   return s;
 }
 

@@ -56,8 +56,10 @@ std::string formatThermalJson(const ThermalResult& r, const std::string& extra) 
   doc["name"] = r.name;
   doc["source"] = r.source;
   // The caller's own fields ("key": value, ... as JSON text), after name and source.
-  if (!extra.empty())
-    for (auto& [key, value] : Json::parse("{" + extra + "}").items()) doc[key] = value;
+  if (!extra.empty()) {
+    const Json fields = Json::parse("{" + extra + "}");
+    for (const auto& [key, value] : fields.items()) doc[key] = value;
+  }
   doc["emitters"] = r.emitterCount;
   doc["occluder_triangles"] = r.occluderTriangles;
   doc["groups"] = r.groupNames;
