@@ -31,6 +31,12 @@ TableReader subTable(const TableReader& t, std::string_view k) {
   return TableReader(t.context(), sub ? *sub : empty, t.key(k), t.key(k));
 }
 
+StudyTitle readStudyTitle(const TableReader& top, const std::string& source) {
+  const TableReader study = subTable(top, "study");
+  return {study.optString("name").value_or(fs::path(source).stem().string()),
+          study.optString("description").value_or("")};
+}
+
 Vec3 vec3At(const TableReader& t, const toml::node& n, const std::string& fullKey, Dimension dim) {
   const toml::array* a = n.as_array();
   if (!a || a->size() != 3) {

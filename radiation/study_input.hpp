@@ -27,6 +27,12 @@ std::string readInputFile(const std::filesystem::path& path, const std::string& 
 // schema entry named `k` (a top-level table).
 TableReader subTable(const TableReader& t, std::string_view k);
 
+// A study's [study] table: its name (default: the file's stem) and description.
+struct StudyTitle {
+  std::string name, description;
+};
+StudyTitle readStudyTitle(const TableReader& top, const std::string& source);
+
 // [x, y, z], each a number (SI) or a quantity string of dimension `dim`.
 std::optional<Vec3> optVec3(const TableReader& t, std::string_view k, Dimension dim);
 Vec3 requireVec3(const TableReader& t, std::string_view k, Dimension dim);

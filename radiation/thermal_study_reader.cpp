@@ -180,9 +180,9 @@ ThermalStudy parseThermalStudy(const std::string& tomlText, const std::string& s
   ThermalStudy s;
   s.source = sourceName;
   const TableReader top(ctx, root, "", "");
-  const TableReader study = subTable(top, "study");
-  s.name = study.optString("name").value_or(fs::path(sourceName).stem().string());
-  s.description = study.optString("description").value_or("");
+  StudyTitle title = readStudyTitle(top, sourceName);
+  s.name = std::move(title.name);
+  s.description = std::move(title.description);
   if (!top.has("approach")) top.fail("approach", "required: the spacecraft's pass ([approach])");
   readApproach(subTable(top, "approach"), s.approach);
   const Vec3 flight = vec3::norm(s.approach.velocity) > 0.0 ? vec3::normalized(s.approach.velocity) : Vec3{1, 0, 0};

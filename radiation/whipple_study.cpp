@@ -61,9 +61,9 @@ WhippleStudy parseWhippleStudy(const std::string& tomlText, const std::string& s
   WhippleStudy s;
   s.source = sourceName;
   const TableReader top(ctx, root, "", "");
-  const TableReader study = subTable(top, "study");
-  s.name = study.optString("name").value_or(fs::path(sourceName).stem().string());
-  s.description = study.optString("description").value_or("");
+  StudyTitle title = readStudyTitle(top, sourceName);
+  s.name = std::move(title.name);
+  s.description = std::move(title.description);
 
   if (!top.has("shield")) top.fail("shield", "required: the bumper, rear wall and standoff ([shield])");
   const TableReader shield = subTable(top, "shield");
