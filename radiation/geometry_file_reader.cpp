@@ -196,10 +196,9 @@ std::string indexed(std::string_view k, std::size_t i) {
   return out;
 }
 
-GeometryConfig validate(const config::Context& ctx, const toml::table& root, const fs::path& base) {
+GeometryConfig validate(const config::Context& ctx, const TableReader& top, const fs::path& base) {
   GeometryConfig c;
   c.source = ctx.source();
-  const TableReader top(ctx, root, "", "");
   if (const toml::table* g = top.optTable("geometry")) {
     const TableReader t(ctx, *g, "geometry", "geometry");
     c.name = t.optString("name").value_or("");
@@ -315,9 +314,8 @@ ShapeSpec readShape(const TableReader& t, ShapeRole role, const fs::path& base) 
 
 GeometryConfig parseGeometryConfig(const std::string& tomlText, const std::string& sourceName,
                                    const fs::path& baseDirectory) {
-  const toml::table doc = parseToml(tomlText, sourceName, kRaise);
-  const config::Context ctx(sourceName, doc, geometrySchema(), kRaise);
-  return validate(ctx, doc, baseDirectory);
+  const InputDocument doc(tomlText, sourceName, geometrySchema(), kRaise);
+  return validate(doc.context(), doc.top(), baseDirectory);
 }
 
 GeometryConfig loadGeometryConfig(const fs::path& path) {

@@ -31,10 +31,10 @@ TableReader subTable(const TableReader& t, std::string_view k) {
   return TableReader(t.context(), sub ? *sub : empty, t.key(k), t.key(k));
 }
 
-StudyTitle readStudyTitle(const TableReader& top, const std::string& source) {
+void readStudyTitle(const TableReader& top, std::string& name, std::string& description) {
   const TableReader study = subTable(top, "study");
-  return {study.optString("name").value_or(fs::path(source).stem().string()),
-          study.optString("description").value_or("")};
+  name = study.optString("name").value_or(fs::path(top.context().source()).stem().string());
+  description = study.optString("description").value_or("");
 }
 
 Vec3 vec3At(const TableReader& t, const toml::node& n, const std::string& fullKey, Dimension dim) {

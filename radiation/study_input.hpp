@@ -19,6 +19,23 @@ using config::TableReader;
 
 // The TOML document of `text`; a syntax error is raised as "SOURCE:LINE: TOML syntax error: why".
 toml::table parseToml(const std::string& text, const std::string& source, config::Context::Raise raise);
+
+// A parsed input file with the Context its readers report through (the Context points into the
+// tree, so the document stays where it was made).
+class InputDocument {
+ public:
+  InputDocument(const std::string& text, const std::string& source, const config::SchemaTables& schema,
+                config::Context::Raise raise)
+      : root_(parseToml(text, source, raise)), ctx_(source, root_, schema, raise) {}
+  InputDocument(const InputDocument&) = delete;
+  InputDocument& operator=(const InputDocument&) = delete;
+  const config::Context& context() const { return ctx_; }
+  TableReader top() const { return TableReader(ctx_, root_, "", ""); }
+
+ private:
+  toml::table root_;
+  config::Context ctx_;
+};
 // The whole file; a file that cannot be read is raised as "PATH: cannot open the <what>".
 std::string readInputFile(const std::filesystem::path& path, const std::string& what,
                           config::Context::Raise raise);
@@ -28,10 +45,7 @@ std::string readInputFile(const std::filesystem::path& path, const std::string& 
 TableReader subTable(const TableReader& t, std::string_view k);
 
 // A study's [study] table: its name (default: the file's stem) and description.
-struct StudyTitle {
-  std::string name, description;
-};
-StudyTitle readStudyTitle(const TableReader& top, const std::string& source);
+void readStudyTitle(const TableReader& top, std::string& name, std::string& description);
 
 // [x, y, z], each a number (SI) or a quantity string of dimension `dim`.
 std::optional<Vec3> optVec3(const TableReader& t, std::string_view k, Dimension dim);

@@ -175,14 +175,11 @@ std::vector<double> ApproachSpec::times() const {
 
 ThermalStudy parseThermalStudy(const std::string& tomlText, const std::string& sourceName,
                                const fs::path& baseDirectory) {
-  const toml::table root = parseToml(tomlText, sourceName, kRaise);
-  const config::Context ctx(sourceName, root, studySchema(), kRaise);
+  const InputDocument doc(tomlText, sourceName, studySchema(), kRaise);
+  const TableReader top = doc.top();
   ThermalStudy s;
   s.source = sourceName;
-  const TableReader top(ctx, root, "", "");
-  StudyTitle title = readStudyTitle(top, sourceName);
-  s.name = std::move(title.name);
-  s.description = std::move(title.description);
+  readStudyTitle(top, s.name, s.description);
   if (!top.has("approach")) top.fail("approach", "required: the spacecraft's pass ([approach])");
   readApproach(subTable(top, "approach"), s.approach);
   const Vec3 flight = vec3::norm(s.approach.velocity) > 0.0 ? vec3::normalized(s.approach.velocity) : Vec3{1, 0, 0};
@@ -193,7 +190,7 @@ ThermalStudy parseThermalStudy(const std::string& tomlText, const std::string& s
   readEmitters(subTable(top, "emitters"), s.emitters);
   const auto walls = top.tableArray("walls");
   for (std::size_t i = 0; i < walls.size(); ++i)
-    s.walls.push_back(readWall(TableReader(ctx, *walls[i], "walls[" + std::to_string(i) + "]", "walls[]")));
+    s.walls.push_back(readWall(TableReader(doc.context(), *walls[i], "walls[" + std::to_string(i) + "]", "walls[]")));
   const TableReader wall = subTable(top, "wall");
   s.initialTemperature = optPositive(wall, "initial_temperature", Dimension::Temperature, s.initialTemperature);
   s.timeStep = optPositive(wall, "time_step", Dimension::Time, 0.0);

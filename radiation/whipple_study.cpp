@@ -56,14 +56,11 @@ std::string kms(double speed) { return num("%.4g", speed * 1e-3); }
 }  // namespace
 
 WhippleStudy parseWhippleStudy(const std::string& tomlText, const std::string& sourceName) {
-  const toml::table root = parseToml(tomlText, sourceName, kRaise);
-  const config::Context ctx(sourceName, root, shieldSchema(), kRaise);
+  const InputDocument doc(tomlText, sourceName, shieldSchema(), kRaise);
+  const TableReader top = doc.top();
   WhippleStudy s;
   s.source = sourceName;
-  const TableReader top(ctx, root, "", "");
-  StudyTitle title = readStudyTitle(top, sourceName);
-  s.name = std::move(title.name);
-  s.description = std::move(title.description);
+  readStudyTitle(top, s.name, s.description);
 
   if (!top.has("shield")) top.fail("shield", "required: the bumper, rear wall and standoff ([shield])");
   const TableReader shield = subTable(top, "shield");
