@@ -1,8 +1,9 @@
 #pragma once
-// JSON text pieces for the outputs written by hand (thermal.json, viewfactors.json,
-// whipple.json, chart specs): one string escaper and one number format, so no writer can emit
-// an unescaped control character or a bare `nan`/`inf`, which JSON readers reject.
-// Whole documents built with nlohmann_json (summary.json) need neither: its dump does both.
+// JSON text pieces for the outputs still written by hand (chart specs, the source fields
+// apps/ and coupling/ add to thermal.json): one string escaper and one number format, so no
+// writer can emit an unescaped control character or a bare `nan`/`inf`, which JSON readers
+// reject. Whole documents built with nlohmann_json (summary.json, thermal.json, whipple.json,
+// the view-factor report) need neither: its dump does both.
 #include <string>
 #include <string_view>
 

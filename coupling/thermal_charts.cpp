@@ -1,8 +1,9 @@
 #include "coupling/thermal_charts.hpp"
 
-#include <cstdio>
+#include <limits>
 
 #include "core/atomic_file.hpp"
+#include "core/csv.hpp"
 
 namespace fs = std::filesystem;
 
@@ -19,12 +20,6 @@ std::vector<std::string> coatingsOf(const radiation::ThermalResult& result) {
       break;
     }
   return names;
-}
-
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
 }
 
 void writeFluxChart(render::ChartRunner& charts, const radiation::ThermalResult& result,
@@ -86,25 +81,20 @@ void writeSizingChart(render::ChartRunner& charts, const radiation::ThermalResul
 
 std::string sizingChartCsv(const radiation::ThermalResult& result) {
   const std::vector<std::string> coatings = coatingsOf(result);
-  std::string out = "patch";
-  for (const std::string& c : coatings) out += "," + c + "_mm";
-  for (const std::string& c : coatings) out += "," + c + "_kg";
-  out += "\n";
+  std::vector<std::string> header{"patch"};
+  for (const std::string& c : coatings) header.push_back(c + "_mm");
+  for (const std::string& c : coatings) header.push_back(c + "_kg");
+  CsvWriter csv(header);
+  // NaN ("nan") reads as a missing bar: no thickness up to the thickest considered protects the face.
+  constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
   for (const radiation::PatchThermal& p : result.patches) {
     if (p.sizing.size() != coatings.size()) continue;
-    out += p.patch;
-    // "nan" reads as a missing bar: no thickness up to the thickest considered protects the face.
-    for (const radiation::ShieldSizing& z : p.sizing) {
-      out += ',';
-      out += z.feasible ? number(z.thickness * 1e3) : "nan";
-    }
-    for (const radiation::ShieldSizing& z : p.sizing) {
-      out += ',';
-      out += z.feasible ? number(z.addedMass) : "nan";
-    }
-    out += "\n";
+    csv.text(p.patch);
+    for (const radiation::ShieldSizing& z : p.sizing) csv.number(z.feasible ? z.thickness * 1e3 : kNone);
+    for (const radiation::ShieldSizing& z : p.sizing) csv.number(z.feasible ? z.addedMass : kNone);
+    csv.endRow();
   }
-  return out;
+  return csv.str();
 }
 
 std::vector<std::string> writeThermalCharts(render::ChartRunner& charts,

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "core/csv.hpp"
+
 namespace ejecta::fields {
 namespace {
 
@@ -509,14 +511,10 @@ CraterMetrics analyseCrater(const FractionField& field, const CraterOptions& opt
 }
 
 std::string craterProfileCsv(const CraterMetrics& metrics) {
-  std::string csv = "distance_m,depth_mean_m,depth_min_m,depth_max_m\n";
-  char line[160];
-  for (const CraterProfileBin& b : metrics.profile) {
-    std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g,%.9g\n", b.distance, b.depthMean, b.depthMin,
-                  b.depthMax);
-    csv += line;
-  }
-  return csv;
+  CsvWriter csv({"distance_m", "depth_mean_m", "depth_min_m", "depth_max_m"});
+  for (const CraterProfileBin& b : metrics.profile)
+    csv.number(b.distance).number(b.depthMean).number(b.depthMin).number(b.depthMax).endRow();
+  return csv.str();
 }
 
 }  // namespace ejecta::fields

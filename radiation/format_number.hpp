@@ -1,5 +1,5 @@
 #pragma once
-// printf-style formatting of one number for error messages of the wall solvers and sizing.
+// printf-style formatting of one number, for messages and the text reports.
 #include <cstdio>
 #include <string>
 

@@ -3,8 +3,9 @@
 // spacecraft (primitive or mesh file, with its pose), extra plates, synthetic hot emitters, an
 // optional occluding body, the receivers and the sampling. Parsed into plain structs with
 // errors "FILE:LINE: key 'a.b': reason"; computeViewFactors runs it and the formatters print the
-// report. Format and examples: docs/view_factors.md, scenes/geometry/*.toml. All values in SI
-// units (m, s, K, m/s); angles in degrees.
+// report. Format and examples: docs/view_factors.md, scenes/geometry/*.toml. Lengths, times,
+// temperatures and speeds are numbers in SI units (m, s, K, m/s) or quantity strings ("2 m",
+// "1500 K"), read by core/units.hpp; rotation_angle is a number in degrees or a string ("90 deg").
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -12,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/input_error.hpp"
 #include "radiation/emitters.hpp"
 #include "radiation/mesh.hpp"
 #include "radiation/solid_angle_baseline.hpp"
@@ -20,9 +22,10 @@
 
 namespace ejecta::radiation {
 
-class GeometryFileError : public std::runtime_error {
+// A bad geometry file (or a mesh or scene it names that cannot be built).
+class GeometryFileError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 // A surface given by shape: the spacecraft body, a plate, the occluder.

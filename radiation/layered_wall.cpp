@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "core/atomic_file.hpp"
+#include "core/csv.hpp"
 
 namespace ejecta::radiation {
 
@@ -191,27 +192,21 @@ void writeWallHistoryCsv(const std::filesystem::path& path, const WallHistory& h
            " K, melting point " + number(layer.material.meltingPoint) + " K, reached at " +
            (std::isnan(melt) ? std::string("never") : number(melt) + " s") + "\n";
   }
-  out += "time_s,hot_face_K";
+  std::vector<std::string> header{"time_s", "hot_face_K"};
   for (std::size_t k = 0; k + 1 < wall.layerCount(); ++k)
-    out += ",interface_" + std::to_string(k + 1) + "_K";
-  out += ",cold_face_K";
+    header.push_back("interface_" + std::to_string(k + 1) + "_K");
+  header.push_back("cold_face_K");
   for (std::size_t l = 0; l < wall.layerCount(); ++l)
-    out += ",max_" + std::to_string(l + 1) + "_" + wall.layers()[l].material.name + "_K";
-  out += "\n";
-  // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "," + std::string.
-  auto cell = [&out](double v) {
-    out += ',';
-    out += number(v);
-  };
+    header.push_back("max_" + std::to_string(l + 1) + "_" + wall.layers()[l].material.name + "_K");
+  CsvWriter csv(header);
   for (std::size_t r = 0; r < history.size(); ++r) {
-    out += number(history.time()[r]);
-    cell(history.hotFace()[r]);
-    for (std::size_t k = 0; k + 1 < wall.layerCount(); ++k)
-      cell(history.interfaceTemperature(k)[r]);
-    cell(history.coldFace()[r]);
-    for (std::size_t l = 0; l < wall.layerCount(); ++l) cell(history.layerMaximum(l)[r]);
-    out += '\n';
+    csv.number(history.time()[r]).number(history.hotFace()[r]);
+    for (std::size_t k = 0; k + 1 < wall.layerCount(); ++k) csv.number(history.interfaceTemperature(k)[r]);
+    csv.number(history.coldFace()[r]);
+    for (std::size_t l = 0; l < wall.layerCount(); ++l) csv.number(history.layerMaximum(l)[r]);
+    csv.endRow();
   }
+  out += csv.str();
   writeFileAtomically(path, out);
 }
 

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "core/input_error.hpp"
+
 namespace ejecta::radiation {
 
 using Vec3 = std::array<double, 3>;
@@ -36,9 +38,9 @@ inline bool finite(const Vec3& a) {
 }  // namespace vec3
 
 // A malformed mesh file or mesh: the message names the file, the line (or triangle) and why.
-class MeshError : public std::runtime_error {
+class MeshError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 struct TriangleMesh {

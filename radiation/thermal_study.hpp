@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "core/input_error.hpp"
 #include "radiation/emitters.hpp"
 #include "radiation/geometry_file.hpp"
 #include "radiation/layered_wall.hpp"
@@ -31,9 +32,10 @@
 
 namespace ejecta::radiation {
 
-class ThermalStudyError : public std::runtime_error {
+// A bad thermal study file, or a study its spacecraft cannot run (a wall on a missing patch).
+class ThermalStudyError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 // A straight pass at constant velocity: the body origin is at `start` at t = 0 and the flux is

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "core/csv.hpp"
+
 namespace ejecta::radiation {
 
 namespace {
@@ -117,33 +119,28 @@ ViewFactorConvergence studyViewFactorConvergence(const GeometryConfig& config,
 }
 
 std::string formatConvergenceCsv(const ViewFactorConvergence& study) {
-  std::string out = "rays,wall_s";
-  auto cell = [&out](const std::string& text) {
-    out += ',';
-    out += text;
-  };
+  std::vector<std::string> header{"rays", "wall_s"};
   for (const TrackedFactor& f : study.factors) {
     const std::string c = convergenceColumn(f);
-    cell(c);
-    cell(c + "_stderr");
-    if (f.exact) cell(c + "_error");
+    header.push_back(c);
+    header.push_back(c + "_stderr");
+    if (f.exact) header.push_back(c + "_error");
   }
-  cell("inverse_sqrt\n");
-  if (study.steps.empty()) return out;
+  header.push_back("inverse_sqrt");
+  CsvWriter csv(header);
+  if (study.steps.empty()) return csv.str();
   const ConvergenceStep& first = study.steps.front();
   const double e0 = first.factors.empty() ? 0.0 : first.factors.front().standardError;
   for (const ConvergenceStep& s : study.steps) {
-    out += std::to_string(s.rays);
-    cell(number(s.seconds));
+    csv.count(s.rays).number(s.seconds);
     for (std::size_t k = 0; k < study.factors.size(); ++k) {
-      cell(number(s.factors[k].value));
-      cell(number(s.factors[k].standardError));
-      if (study.factors[k].exact) cell(number(std::abs(s.factors[k].value - *study.factors[k].exact)));
+      csv.number(s.factors[k].value).number(s.factors[k].standardError);
+      if (study.factors[k].exact) csv.number(std::abs(s.factors[k].value - *study.factors[k].exact));
     }
-    cell(number(e0 * std::sqrt(static_cast<double>(first.rays) / static_cast<double>(s.rays))));
-    out += '\n';
+    csv.number(e0 * std::sqrt(static_cast<double>(first.rays) / static_cast<double>(s.rays)));
+    csv.endRow();
   }
-  return out;
+  return csv.str();
 }
 
 std::string formatConvergenceText(const ViewFactorConvergence& study) {

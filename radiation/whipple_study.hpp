@@ -19,13 +19,15 @@
 #include <string>
 #include <vector>
 
+#include "core/input_error.hpp"
 #include "radiation/whipple.hpp"
 
 namespace ejecta::radiation {
 
-class WhippleStudyError : public std::runtime_error {
+// A bad Whipple shield file, or a shield or threat the equations reject.
+class WhippleStudyError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 struct WhippleThreat {

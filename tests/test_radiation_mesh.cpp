@@ -636,6 +636,45 @@ TEST(GeometryFile, MeshPathsAreRelativeToTheFile) {
   EXPECT_NE(msg.find("meshes/panel.obj: cannot open the mesh file"), std::string::npos) << msg;
 }
 
+// Geometry files read their quantities with core's parser, the scenes' one: a value with a unit
+// gives what the same value in SI gives, and a unit of the wrong dimension names the key.
+TEST(GeometryFile, AcceptsQuantitiesWithUnits) {
+  const std::string withUnits =
+      "[spacecraft]\nshape = \"cylinder\"\nradius = \"50 cm\"\nlength = \"2 m\"\n"
+      "position = [\"1 km\", 0, \"-20 mm\"]\nvelocity = [\"10 km/s\", 0, 0]\n"
+      "rotation_axis = [0, 0, 1]\nrotation_angle = \"0.5 rad\"\ntimes = [0, \"0.5 ms\"]\n"
+      "[[emitters]]\nname = \"melt\"\nshape = \"sphere\"\ncenter = [0, 0, 0]\nradius = \"1 m\"\n"
+      "spacing = \"25 cm\"\ntemperature = \"2.2e3 K\"\n"
+      "[hot_material]\nmin_temperature = \"1500 K\"\n"
+      "[receivers]\nbaseline_length = \"100 cm\"\n";
+  const GeometryConfig c = parseGeometryConfig(withUnits, "units.toml", ".");
+  ASSERT_TRUE(c.spacecraft.has_value());
+  EXPECT_DOUBLE_EQ(c.spacecraft->body.radius, 0.5);
+  EXPECT_DOUBLE_EQ(c.spacecraft->body.length, 2.0);
+  EXPECT_DOUBLE_EQ(c.spacecraft->pose.position[0], 1000.0);
+  EXPECT_DOUBLE_EQ(c.spacecraft->pose.position[2], -0.02);
+  EXPECT_DOUBLE_EQ(c.spacecraft->pose.velocity[0], 1e4);
+  ASSERT_EQ(c.spacecraft->times.size(), 2u);
+  EXPECT_DOUBLE_EQ(c.spacecraft->times[1], 5e-4);
+  ASSERT_EQ(c.emitters.size(), 1u);
+  EXPECT_DOUBLE_EQ(c.emitters[0].spacing, 0.25);
+  EXPECT_DOUBLE_EQ(c.emitters[0].temperatures[0], 2200.0);
+  EXPECT_DOUBLE_EQ(c.minTemperature, 1500.0);
+  EXPECT_DOUBLE_EQ(c.baseline.receiverSide, 1.0);
+  // A plain number of degrees (the key's old form) and "0.5 rad" agree on the attitude.
+  std::string degrees = withUnits;
+  degrees.replace(degrees.find("\"0.5 rad\""), 9, std::to_string(0.5 * 180.0 / std::numbers::pi));
+  const Vec3 x = c.spacecraft->pose.attitude.apply({1, 0, 0});
+  const Vec3 y = parseGeometryConfig(degrees, "deg.toml", ".").spacecraft->pose.attitude.apply({1, 0, 0});
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(x[k], y[k], 1e-6);
+
+  const std::string wrong = errorOf<GeometryFileError>([] {
+    parseGeometryConfig("[spacecraft]\nshape = \"box\"\nsize = [1, \"1 K\", 1]\n", "g.toml", ".");
+  });
+  EXPECT_NE(wrong.find("g.toml:3: key 'spacecraft.size[1]': expected a length (m), got a temperature (K)"),
+            std::string::npos) << wrong;
+}
+
 TEST(GeometryFile, ErrorsNameTheFileLineAndKey) {
   struct Case {
     const char* text;

@@ -199,7 +199,7 @@ TEST(ThermalStudy, WallAndSizingFollowTheFlux) {
 // A study reads its quantities with core's parser, the scenes' one: units only a scene took
 // before (compound, other prefixes, the Greek mu) give the value a scene gives.
 TEST(ThermalStudy, AcceptsEveryUnitASceneAccepts) {
-  const std::string approach = "speed = \"3.6e7 m/ks\"\ntarget = [0.0, 0.0, 0.0]\n"
+  const std::string approach = "speed = \"3.6e7 m/ks\"\ntarget = [\"0 m\", \"0.5 mm\", 0.0]\n"
                                "duration = \"1500 \xCE\xBCs\"\nsamples = 2\n";
   const std::string rest =
       "[emitters]\nmin_temperature = \"1.5e3 K\"\n"
@@ -210,6 +210,7 @@ TEST(ThermalStudy, AcceptsEveryUnitASceneAccepts) {
   const ThermalStudy s = parseThermalStudy(studyText(1.0, approach, rest), "units.toml", ".");
   EXPECT_DOUBLE_EQ(vec3::norm(s.approach.velocity), parseQuantity("3.6e7 m/ks", Dimension::Velocity));
   EXPECT_DOUBLE_EQ(vec3::norm(s.approach.velocity), 3.6e4);
+  EXPECT_DOUBLE_EQ(s.approach.target[1], 5e-4);  // vectors take units too
   EXPECT_EQ(s.approach.duration, parseQuantity("1500 \xCE\xBCs", Dimension::Time));
   EXPECT_DOUBLE_EQ(s.approach.duration, 1.5e-3);
   EXPECT_DOUBLE_EQ(s.emitters.minTemperature, 1500.0);
