@@ -33,7 +33,7 @@ double pace(std::int64_t id) { return 1.0 + static_cast<double>(id % 7); }
 class PacedClock : public PhysicsPackage {
  public:
   std::string name() const override { return "paced_clock"; }
-  void registerFields(ParticleSet& p) const override {
+  void registerFields(ParticleSet& p) override {
     FieldSpec tracer;
     tracer.name = "tracer";
     tracer.units = "s";
@@ -50,13 +50,13 @@ class PacedClock : public PhysicsPackage {
     rate.output = FieldOutput::Restart;
     p.declare(rate);
   }
-  void evaluateDerivatives(ParticleSet& p, double) const override {
+  void evaluateDerivatives(ParticleSet& p, const PackageContext&) override {
     std::vector<double>& rate = p.column(*p.field("dtracer_dt"), 0);
     for (std::size_t i = 0; i < p.numReal; ++i) rate[i] = pace(p.id[i]);
   }
   // A package's vote on the step: at least 64 steps to the blast's 0.02 s, so the run reorders
   // its particles (every 16 steps) several times.
-  double timestep(const ParticleSet&) const override { return 0.02 / 64; }
+  double timestep(const ParticleSet&, const PackageContext&) const override { return 0.02 / 64; }
 };
 
 fs::path tempDir(const std::string& tag) {
@@ -73,7 +73,7 @@ std::map<std::int64_t, std::size_t> indexById(const ParticleSet& p) {
 
 TEST(FieldRegistry, APackageFieldIsIntegratedWrittenListedAndRestarted) {
   const fs::path full = tempDir("full"), cut = tempDir("cut");
-  const std::vector<std::shared_ptr<const PhysicsPackage>> packages{std::make_shared<PacedClock>()};
+  const std::vector<std::shared_ptr<PhysicsPackage>> packages{std::make_shared<PacedClock>()};
   ejecta::test::runAndResumeFromSnapshot2(ejecta::test::periodicBlastScene(), full, cut, 2, packages);
 
   SnapshotInfo infoA, infoB;

@@ -164,8 +164,9 @@ TEST(Fracture, CrackSpeedIsThatOfTheIntactMaterial) {
   // Issue 3 review, defect 3: c_g = 0.4 c_l of the intact material. Two particles in the same
   // state, one intact and one half damaged, each with all three of its flaws active (cap 1): both
   // cracks grow at 3 c_g / h with c_l = sqrt((K + 4G/3) / rho), K and G undamaged (miluphcuda
-  // instead lowers G by (1 - D) here). The state is set as applyMaterialState leaves it: the
-  // signal speed is sqrt(K/rho + 4G/(3 rho)) and the tension is scaled by (1 - D).
+  // instead lowers G by (1 - D) here). The state is set as a step leaves it after the equation
+  // of state (applySolidSoundSpeed, applyDamageToTension): the signal speed is
+  // sqrt(K/rho + 4G/(3 rho)) and the tension is scaled by (1 - D).
   const double G = 22.7e9, K = 26.7e9, rho = 2700.0, h = 1e-3;
   ParticleSet p = solidParticles(2);
   const double cl = std::sqrt((K + 4.0 * G / 3.0) / rho);

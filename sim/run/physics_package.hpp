@@ -1,15 +1,34 @@
 #pragma once
-// A physics package: a term of the equations that owns its per-particle state, its rates and its
-// vote on the time step (in the spirit of Spheral's Physics: registerState / evaluateDerivatives /
-// dt). A package declares its fields once (sim/state/field_spec.hpp); the leapfrog then advances
-// them, snapshots and restarts carry them and the XDMF lists them with no other change
-// (docs/design.md). Called per particle set, never per pair: the pair loops stay fused.
+// A physics package: a term of the equations that owns its per-particle state, its updates
+// outside the pair loops and its vote on the time step (in the spirit of Spheral's Physics:
+// registerState / evaluateDerivatives / dt / finalize). A package declares its fields once
+// (sim/state/field_spec.hpp); the leapfrog then advances them, snapshots and restarts carry
+// them and the XDMF lists them with no other change (docs/design.md). Its pair contribution, if
+// any, is an inline term of the fused force pass (sim/sph/terms/): the hooks here are called per
+// particle set, never per pair.
+//
+// The life cycle of one step (sim/run/simulation.cpp), each hook over the packages in the order
+// they joined:
+//   limitKicks -> [leapfrog predict] -> afterDrift -> [pair passes, equation of state]
+//   -> updateState -> [force pass] -> evaluateDerivatives -> [leapfrog correct, equation of
+//   state] -> updateState -> finalize -> timestep
+// A package that keeps state between steps belongs to one Simulation.
 #include <limits>
 #include <string>
 
+#include "sim/solid/materials.hpp"
 #include "sim/state/particles.hpp"
 
 namespace ejecta {
+
+class Leapfrog;
+
+// What every hook may read besides the particles.
+struct PackageContext {
+  const MaterialTable& materials;
+  int dimension;  // of the particle positions: 1, 2 (planar and RZ) or 3
+  double time;    // of the state the hook sees [s]
+};
 
 class PhysicsPackage {
  public:
@@ -17,12 +36,22 @@ class PhysicsPackage {
   virtual std::string name() const = 0;
   // Declares the package's fields on the particles (ParticleSet::declare). Called once when the
   // package joins a Simulation; on a restart the values read back from the snapshot are kept.
-  virtual void registerFields(ParticleSet& p) const = 0;
-  // The rates of the package's evolved fields for the real particles, after the pair passes, at
-  // time `t` of the state they see.
-  virtual void evaluateDerivatives(ParticleSet& p, double t) const = 0;
+  virtual void registerFields(ParticleSet& p) = 0;
+  // Before each step's first kick: per-particle limits of the package's kicked fields
+  // (Leapfrog::setCaps), from the state the step starts from.
+  virtual void limitKicks(Leapfrog&, const PackageContext&) {}
+  // After the drift, on the predicted state, before the pair passes see it.
+  virtual void afterDrift(ParticleSet&, const PackageContext&) {}
+  // After the equation of state of every evaluated state (pressures and sound speeds set).
+  virtual void updateState(ParticleSet&, const PackageContext&) {}
+  // The rates of the package's evolved fields for the real particles, after the pair passes.
+  virtual void evaluateDerivatives(ParticleSet&, const PackageContext&) {}
+  // At the end of a step, on the final state.
+  virtual void finalize(ParticleSet&, const PackageContext&) {}
   // The longest step the package allows from the present state (infinity: no limit).
-  virtual double timestep(const ParticleSet&) const { return std::numeric_limits<double>::infinity(); }
+  virtual double timestep(const ParticleSet&, const PackageContext&) const {
+    return std::numeric_limits<double>::infinity();
+  }
 };
 
 }  // namespace ejecta

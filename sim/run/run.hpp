@@ -34,8 +34,9 @@ struct RunOptions {
   // snapshot), to add hooks for it: the command line adds the fields/ outputs here.
   std::function<void(const Scene&, RunOptions&)> configure;
   // Physics packages beyond what the scene assembles (sim/run/physics_package.hpp), added to the
-  // simulation of a new run and of a restart alike.
-  std::vector<std::shared_ptr<const PhysicsPackage>> packages;
+  // simulation of a new run and of a restart alike (so a package shared by both must keep no
+  // state between steps).
+  std::vector<std::shared_ptr<PhysicsPackage>> packages;
 };
 
 struct RunOutcome {

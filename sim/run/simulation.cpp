@@ -12,9 +12,11 @@
 
 #include "sim/setup/bodies.hpp"
 #include "sim/sph/density_pass.hpp"
-#include "sim/solid/fracture.hpp"
+#include "sim/run/packages/programmed_burn_package.hpp"
+#include "sim/run/packages/strength_package.hpp"
+#include "sim/run/packages/viscosity_switch_package.hpp"
+#include "sim/solid/solid_state.hpp"
 #include "sim/sph/hydro_force.hpp"
-#include "sim/sources/programmed_burn.hpp"
 
 namespace ejecta {
 
@@ -74,9 +76,15 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
       throw SimulationError("particle id " + std::to_string(p_.id[i]) +
                             " has material index " + std::to_string(p_.material[i]) +
                             " but the scene defines " + std::to_string(materials_.size()));
-  // Solid state only where a material asks for it.
+  // The scene's packages, each only where the scene asks for it (docs/design.md). The burn table
+  // checks the detonations even where no particle can burn.
+  BurnTable burn = burnTable(scene_.detonations, materials_);
+  if (!scene_.detonations.empty() && !p_.hasBurn())
+    throw SimulationError("scene '" + scene_.name + "' detonates an explosive but the particles "
+                          "carry no lighting times (build them with buildParticles)");
+  if (p_.hasBurn()) addPackage(std::make_shared<ProgrammedBurnPackage>(std::move(burn), scene_.sph.eta));
   if (materials_.anyStrength()) {
-    if (p_.stressComponents() == 0) p_.enableStrength(stressComponentCount(ws_.dim));
+    addPackage(std::make_shared<StrengthPackage>(ws_.dim));
     ws_.shearModulus.assign(materials_.size(), 0.0);
     ws_.yieldCarriesDamage.assign(materials_.size(), 0);
     for (std::size_t m = 0; m < materials_.size(); ++m)
@@ -87,35 +95,36 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
     // Gray et al. (2001) use epsilon = 0.3 for elastic solids in tension.
     ws_.artificialStress = scene_.sph.artificialStress < 0.0 ? 0.3 : scene_.sph.artificialStress;
   }
-  if (materials_.anyFracture() && !p_.hasFracture()) p_.enableFracture();
-  burn_ = burnTable(scene_.detonations, materials_);
+  // A restarted run's particles may carry fracture fields its materials no longer use.
+  if (materials_.anyFracture() || p_.hasFracture()) {
+    fracture_ = std::make_shared<FracturePackage>();
+    addPackage(fracture_);
+  }
   // A delayed body deposit finds its body's particles by id (they are reordered every few steps).
   for (const EnergyDepositSpec& dep : scene_.deposits)
     if (dep.time > 0.0 && dep.body >= 0 && bodyFirstIds_.empty())
       bodyFirstIds_ = bodyFirstIds(scene_, materials_);
-  if (!scene_.detonations.empty() && !p_.hasBurn())
-    throw SimulationError("scene '" + scene_.name + "' detonates an explosive but the particles "
-                          "carry no lighting times (build them with buildParticles)");
-  initialiseViscosityAlpha(p_, scene_.sph);  // a restart keeps its snapshot's alpha
-  if (p_.hasViscositySwitch()) p_.setClampRange("viscosity_alpha", scene_.sph.alphaMin, scene_.sph.alpha);
+  // A restart keeps its snapshot's alpha (and a snapshot's alpha stays in range with the switch
+  // off).
+  if (scene_.sph.viscositySwitch != ViscositySwitch::None || p_.hasViscositySwitch())
+    addPackage(std::make_shared<ViscositySwitchPackage>(scene_.sph));
   // Summation density sets rho in the density pass, and h tied to the density sets h: the
   // leapfrog advances them only when the scene integrates them.
   if (scene_.sph.density != DensityMethod::Continuity) leapfrog_.hold("density");
   if (scene_.sph.smoothingLength != SmoothingLengthMethod::Seed) leapfrog_.hold("smoothing_length");
 }
 
-void Simulation::addPackage(std::shared_ptr<const PhysicsPackage> package) {
+void Simulation::addPackage(std::shared_ptr<PhysicsPackage> package) {
   package->registerFields(p_);
   packages_.push_back(std::move(package));
 }
 
 void Simulation::distributeFlaws(const ParticleSet& initial) {
-  flaws_ = distributeMaterialFlaws(initial, materials_);
-  flawsReady_ = true;
+  if (fracture_) fracture_->distributeFlaws(initial, materials_);
 }
 
 void Simulation::initialise() {
-  if (!flawsReady_) distributeFlaws(p_);
+  if (fracture_ && !fracture_->flawsReady()) distributeFlaws(p_);
   stateTime_ = time_;
   if (scene_.sph.density == DensityMethod::Continuity &&
       scene_.sph.smoothingLength == SmoothingLengthMethod::Neighbours)
@@ -127,7 +136,7 @@ void Simulation::initialise() {
 }
 
 void Simulation::resume(double time, long step, double dtNext) {
-  if (!flawsReady_) distributeFlaws(p_);
+  if (fracture_ && !fracture_->flawsReady()) distributeFlaws(p_);
   time_ = time;
   stateTime_ = time;
   step_ = step;
@@ -163,8 +172,9 @@ void Simulation::evaluateEquationOfState() {
     materials_[m].eos->evaluate(p_.rho.data(), p_.u.data(), p_.P.data(), p_.cs.data(),
                                 members.data(), members.size());
   }
-  applyProgrammedBurn(p_, burn_, scene_.sph.eta, stateTime_);
-  applyMaterialState(p_, materials_);
+  applyTemperature(p_, materials_);
+  const PackageContext context = packageContext();
+  for (const auto& package : packages_) package->updateState(p_, context);
 }
 
 void Simulation::evaluateDerivatives() {
@@ -209,8 +219,8 @@ void Simulation::evaluateDerivatives() {
              ws_.lists.buildPairs<3>(p_, kKernelSupport); break;
   }
   runForcePass(p_, ws_);
-  computeCrackGrowth(p_, materials_, flaws_, dim);
-  for (const auto& package : packages_) package->evaluateDerivatives(p_, stateTime_);
+  const PackageContext context = packageContext();
+  for (const auto& package : packages_) package->evaluateDerivatives(p_, context);
 }
 
 void Simulation::computeNextTimestep() {
@@ -228,10 +238,10 @@ void Simulation::computeNextTimestep() {
     for (int d = 0; d < 3; ++d) a2 += p_.a[d][i] * p_.a[d][i];
     if (a2 > 0.0) dtForce = std::min(dtForce, sph.forceFactor * std::sqrt(h / std::sqrt(a2)));
   }
-  // Crack growth: no Grady-Kipp crack fraction may grow by more than maxCrackIncrement in a
-  // step, so that the stress a cracking particle sheds reaches its neighbours while it cracks.
-  double dt = std::min({dtCourant, dtForce, crackGrowthTimestep(p_, materials_)});
-  for (const auto& package : packages_) dt = std::min(dt, package->timestep(p_));
+  // The packages' votes (the crack-growth limit among them).
+  double dt = std::min(dtCourant, dtForce);
+  const PackageContext context = packageContext();
+  for (const auto& package : packages_) dt = std::min(dt, package->timestep(p_, context));
   if (scene_.time.dtMax > 0.0 && dt > scene_.time.dtMax) dt = scene_.time.dtMax;
   if (dt == std::numeric_limits<double>::max()) dt = scene_.time.dtMax > 0 ? scene_.time.dtMax
                                                                          : scene_.time.tEnd;
@@ -340,28 +350,24 @@ void Simulation::step(double limit) {
   if (time_ + dt > limit) dt = limit - time_;
   const SphOptions& sph = scene_.sph;
   const int dim = ws_.dim;
-  // The crack's cap comes from the state its kick starts from (sim/run/leapfrog.hpp).
-  leapfrog_.setCaps("crack", [this](const ParticleSet& p) {
-    return crackCaps(p, materials_, flaws_, ws_.dim);
-  });
+  for (const auto& package : packages_) package->limitKicks(leapfrog_, packageContext());
 
   // Kick to the half step, drift positions, predict every evolved field to the full step.
   leapfrog_.predict(p_, dim, dt);
-  applyPlasticity(p_, materials_, false);
+  stateTime_ = time_ + dt;
+  for (const auto& package : packages_) package->afterDrift(p_, packageContext());
   boundaries_.confine(p_, &leapfrog_.velocityHalf());
   if (sph.density == DensityMethod::Continuity &&
       sph.smoothingLength == SmoothingLengthMethod::Neighbours)
     setSmoothingFromDensity(p_, ws_);
 
-  stateTime_ = time_ + dt;
   evaluateDerivatives();
 
   // Second kick with the new derivatives.
   leapfrog_.correct(p_, dim, dt);
   // Pressure and sound speed of the final state, for the snapshot and the next time step.
   evaluateEquationOfState();
-  applyPlasticity(p_, materials_, true);
-  lastFailures_ = applyFailure(p_, materials_);
+  for (const auto& package : packages_) package->finalize(p_, packageContext());
   time_ += dt;
   ++step_;
   lastDt_ = dt;

@@ -17,11 +17,10 @@
 #include "sim/sph/hydro_workspace.hpp"
 #include "sim/run/leapfrog.hpp"
 #include "sim/run/physics_package.hpp"
+#include "sim/run/packages/fracture_package.hpp"
 #include "sim/solid/materials.hpp"
 #include "sim/state/particles.hpp"
-#include "sim/sources/programmed_burn.hpp"
 #include "sim/setup/scene.hpp"
-#include "sim/solid/solid_state.hpp"
 
 namespace ejecta {
 
@@ -57,9 +56,11 @@ class Simulation {
   void distributeFlaws(const ParticleSet& initial);
   // Adds a physics package (sim/run/physics_package.hpp) before the first step or resume():
   // its fields are declared on the particles now.
-  void addPackage(std::shared_ptr<const PhysicsPackage> package);
+  // The scene's own packages (programmed burn, strength, fracture, the viscosity switch) join
+  // in the constructor, in that order; others join after them.
+  void addPackage(std::shared_ptr<PhysicsPackage> package);
   // Particles that failed (principal stress or erosion) in the last step.
-  std::size_t lastFailures() const { return lastFailures_; }
+  std::size_t lastFailures() const { return fracture_ ? fracture_->lastFailures() : 0; }
 
   // Advances one step of min(next time step, limit - time, next delayed deposit - time). A
   // delayed deposit due at the step's start (time >= its time) fires first: its energy is added,
@@ -98,6 +99,8 @@ class Simulation {
   // The earliest time of a delayed deposit not yet fired (infinity when none).
   double nextDepositTime() const;
   bool fired(std::size_t deposit) const;
+  // What the packages' hooks read besides the particles, at the evaluated state's time.
+  PackageContext packageContext() const { return {materials_, ws_.dim, stateTime_}; }
 
   Scene scene_;
   ParticleSet p_;
@@ -111,16 +114,12 @@ class Simulation {
   double hMin_ = 0.0;
   std::uint32_t maxNeighbours_ = 1u << 30;
   std::vector<std::vector<std::size_t>> materialMembers_;
-  // Programmed burn: detonation velocity and C-J compression per material (velocity 0: not
-  // detonated), and the time of the state the equation of state is evaluated for (the
+  // The time of the state the equation of state and the derivatives are evaluated for (the
   // predicted end of the step).
-  BurnTable burn_;
   double stateTime_ = 0.0;
   Leapfrog leapfrog_;  // and its half-step state
-  std::vector<std::shared_ptr<const PhysicsPackage>> packages_;
-  FlawSet flaws_;
-  bool flawsReady_ = false;
-  std::size_t lastFailures_ = 0;
+  std::vector<std::shared_ptr<PhysicsPackage>> packages_;
+  std::shared_ptr<FracturePackage> fracture_;  // also in packages_; owns the flaws
   std::vector<DepositFiring> firings_;
   std::vector<std::int64_t> bodyFirstIds_;  // for delayed body deposits (bodyFirstIds)
 };

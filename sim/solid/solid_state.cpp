@@ -20,7 +20,7 @@ struct FlawActivity {
 };
 
 // The bulk modulus of the intact material, rho c^2 with c the equation of state's sound speed:
-// p.cs holds sqrt(c^2 + 4G/(3 rho)) (applyMaterialState) and no damage enters either.
+// p.cs holds sqrt(c^2 + 4G/(3 rho)) (applySolidSoundSpeed) and no damage enters either.
 double intactBulkModulus(const ParticleSet& p, std::size_t i, double shearModulus) {
   return std::max(p.rho[i] * p.cs[i] * p.cs[i] - 4.0 * shearModulus / 3.0, 0.0);
 }
@@ -103,17 +103,26 @@ FlawSet distributeMaterialFlaws(const ParticleSet& initial, const MaterialTable&
   return set;
 }
 
-void applyMaterialState(ParticleSet& p, const MaterialTable& materials) {
-  const bool fracture = p.hasFracture();
+void applyTemperature(ParticleSet& p, const MaterialTable& materials) {
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.numReal; ++i)
+    p.temperature[i] = materials[static_cast<std::size_t>(p.material[i])].thermal.temperature(p.u[i]);
+}
+
+void applyDamageToTension(ParticleSet& p) {
+  if (!p.hasFracture()) return;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.numReal; ++i)
+    if (p.P[i] < 0.0) p.P[i] *= 1.0 - p.damage(i);
+}
+
+void applySolidSoundSpeed(ParticleSet& p, const MaterialTable& materials) {
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.numReal; ++i) {
     const Material& mat = materials[static_cast<std::size_t>(p.material[i])];
-    p.temperature[i] = mat.thermal.temperature(p.u[i]);
-    if (fracture && p.P[i] < 0.0) p.P[i] *= 1.0 - p.damage(i);
-    if (mat.strength) {
-      const double c2 = p.cs[i] * p.cs[i] + 4.0 * mat.strength->shearModulus / (3.0 * p.rho[i]);
-      p.cs[i] = std::sqrt(c2);
-    }
+    if (!mat.strength) continue;
+    const double c2 = p.cs[i] * p.cs[i] + 4.0 * mat.strength->shearModulus / (3.0 * p.rho[i]);
+    p.cs[i] = std::sqrt(c2);
   }
 }
 

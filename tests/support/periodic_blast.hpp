@@ -51,7 +51,7 @@ radius = 0.06
 // that full/ and cut/ snapshots/snap_0004.h5 can be compared. Fails the calling test on error.
 inline void runAndResumeFromSnapshot2(const std::string& source, const std::filesystem::path& full,
                                       const std::filesystem::path& cut, int threads = 2,
-                                      const std::vector<std::shared_ptr<const PhysicsPackage>>& packages = {}) {
+                                      const std::vector<std::shared_ptr<PhysicsPackage>>& packages = {}) {
   for (const std::filesystem::path& dir : {full, cut}) {
     RunOptions options;
     options.outDir = dir.string();

@@ -1,0 +1,17 @@
+#include "sim/run/packages/programmed_burn_package.hpp"
+
+#include <stdexcept>
+
+namespace ejecta {
+
+void ProgrammedBurnPackage::registerFields(ParticleSet& p) {
+  if (!p.hasBurn())
+    throw std::logic_error("programmed burn needs the particles' lighting times (build them with "
+                           "buildParticles)");
+}
+
+void ProgrammedBurnPackage::updateState(ParticleSet& p, const PackageContext& c) {
+  applyProgrammedBurn(p, burn_, eta_, c.time);
+}
+
+}  // namespace ejecta
