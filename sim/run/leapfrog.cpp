@@ -14,10 +14,27 @@ int evolvedComponents(const Field& f, int dimension) {
   return f.spec.spatial ? std::min(dimension, f.spec.components) : f.spec.components;
 }
 
+// The Kicked field that drifts the positions (the Drifted fields' FieldSpec::rate).
+std::string driftingField(const ParticleSet& p) {
+  std::string name;
+  for (const Field& x : p.fields()) {
+    if (x.spec.evolution != Evolution::Drifted) continue;
+    const Field* v = p.field(x.spec.rate);
+    if (!v || v->spec.evolution != Evolution::Kicked || v->spec.components > 3)
+      throw std::logic_error("field '" + x.spec.name + "' drifts by '" + x.spec.rate +
+                             "', which is not a kicked vector the particles carry");
+    if (!name.empty() && name != x.spec.rate)
+      throw std::logic_error("the drifted fields drift by different fields ('" + name + "', '" +
+                             x.spec.rate + "')");
+    name = x.spec.rate;
+  }
+  return name;
+}
+
 }  // namespace
 
 std::vector<double>& Leapfrog::halfOf(const Field& f, int component) {
-  if (f.spec.name == "velocity") return velocityHalf_[static_cast<std::size_t>(component)];
+  if (f.spec.name == drifting_) return velocityHalf_[static_cast<std::size_t>(component)];
   std::vector<std::vector<double>>& halves = halves_[f.spec.name];
   if (halves.size() < static_cast<std::size_t>(f.spec.components))
     halves.resize(static_cast<std::size_t>(f.spec.components));
@@ -75,11 +92,12 @@ void Leapfrog::kick(ParticleSet& p, const Field& f, int dimension, double half, 
 
 void Leapfrog::predict(ParticleSet& p, int dimension, double dt) {
   const double half = 0.5 * dt;
+  drifting_ = driftingField(p);
   for (const Field& f : p.fields()) {
     if (f.spec.evolution != Evolution::Kicked || held_.count(f.spec.name)) continue;
     kick(p, f, dimension, half, true);
     // Positions drift by the half-step velocity as soon as it is known.
-    if (f.spec.name == "velocity")
+    if (f.spec.name == drifting_)
       for (const Field& x : p.fields())
         if (x.spec.evolution == Evolution::Drifted) drift(p, x, dimension, dt);
   }

@@ -34,7 +34,8 @@ class Leapfrog {
   // Second half kick with the rates of the predicted state.
   void correct(ParticleSet& p, int dimension, double dt);
 
-  // The velocity at the half step, which the walls confine with the positions.
+  // The velocity at the half step (the field the positions drift by), which the walls confine
+  // with the positions.
   Vec3Array& velocityHalf() { return velocityHalf_; }
 
  private:
@@ -44,7 +45,8 @@ class Leapfrog {
 
   std::set<std::string> held_;
   std::map<std::string, CapSource> caps_;
-  Vec3Array velocityHalf_;  // what positions drift by
+  std::string drifting_;    // the Kicked field the Drifted ones drift by (the velocity)
+  Vec3Array velocityHalf_;  // its half-step value, what positions drift by
   std::map<std::string, std::vector<std::vector<double>>> halves_;  // y_half per component
 };
 

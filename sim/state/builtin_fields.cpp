@@ -90,6 +90,7 @@ std::vector<Field> coreFields() {
   FieldSpec position = vector3(scalar("position", "m",
                                       "particle position: 1D (x,0,0), 2D (x,y,0), RZ (r,z,0)", kParticles));
   position.evolution = Evolution::Drifted;
+  position.rate = "velocity";
   position.spatial = true;
   position.writeDimensionOnly = true;
   position.halo = true;

@@ -22,7 +22,7 @@ enum class FieldOutput { None, Particles, Restart };
 enum class Evolution {
   None,     // set by a pass, the equation of state or a package's update; or constant
   Kicked,   // two half kicks y += dt/2 * rate, the rate evaluated at the start and at the end
-  Drifted,  // x += dt * v at the half step (positions)
+  Drifted,  // x += dt * v_half, v the Kicked field named by FieldSpec::rate (positions)
 };
 
 // A bound on each half kick of a Kicked field.
@@ -51,7 +51,8 @@ struct FieldSpec {
   bool halo = false;         // read from neighbours by the pair passes: ghosts and halos carry it
   MirrorParity parity = MirrorParity::Scalar;
   Evolution evolution = Evolution::None;
-  std::string rate;          // Kicked: the field holding the time derivative
+  std::string rate;          // Kicked: the field holding the time derivative; Drifted: the
+                             // Kicked field whose half-step value moves it (position: velocity)
   KickLimit limit = KickLimit::None;
   double lo = 0.0, hi = 0.0; // Clamp: the range
   bool spatial = false;      // a vector in space: evolved over the geometry's dimension only
