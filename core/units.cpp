@@ -256,6 +256,18 @@ double parseQuantity(std::string_view text, Dimension expected) {
   const double number = readNumber(whole, rest);
   rest = trim(rest);
   if (rest.empty()) return number;  // a bare number is SI already
+  // Degrees Celsius are an offset scale, not a factor: only a temperature standing alone may be
+  // written in them ("20 degC" = 293.15 K, the ITS-90 offset); inside a compound unit they
+  // would be ambiguous (a difference or a level?), so there K is asked for.
+  if (rest == "degC" || rest == "\u00b0C") {
+    if (expected != Dimension::Temperature)
+      throw UnitError("expected " + describeDimension(expected) + ", got a temperature in '" +
+                      std::string(whole) + "'");
+    return number + 273.15;
+  }
+  if (rest.find("degC") != std::string_view::npos || rest.find("\u00b0C") != std::string_view::npos)
+    throw UnitError("degrees Celsius are an offset scale, allowed only as a temperature on its "
+                    "own (\"20 degC\"); write '" + std::string(whole) + "' with K");
 
   Unit unit = parseUnitExpression(rest, false, whole);
   if (unit.dim != expected && unit.usesTon) {

@@ -4,7 +4,7 @@
 // variant, against the depth of burst when the device moves along one coordinate, and otherwise
 // as a bar per variant labelled by its values (the seed's Figs. 2.13 and 2.18 chart against the
 // location). Pure functions of the sweep's axes and collected values, so they are unit-tested
-// (tests/test_sweep_chart.cpp); header-only because the tests do not link the ejecta binary.
+// (tests/coupling/test_sweep_chart.cpp); header-only because the tests do not link the ejecta binary.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>

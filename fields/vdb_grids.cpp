@@ -12,6 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/atomic_file.hpp"
 #include "sim/io/snapshot.hpp"
 
 namespace fs = std::filesystem;
@@ -148,15 +149,15 @@ void writeGridFile(const std::string& path, const GridSet& set, const GridFileMe
 
   const fs::path target(path);
   if (target.has_parent_path()) fs::create_directories(target.parent_path());
-  const fs::path tmp = target.string() + ".tmp";
+  // A unique temporary beside the target, synced and renamed over it (core/atomic_file.hpp):
+  // a reader or a crash sees the old file or the new one, never half of one.
   try {
-    openvdb::io::File file(tmp.string());
+    AtomicFileTarget out(target);
+    openvdb::io::File file(out.tempPath().string());
     file.write(grids, fileMeta);
     file.close();
-    fs::rename(tmp, target);
+    out.commit();
   } catch (const std::exception& e) {
-    std::error_code ignored;
-    fs::remove(tmp, ignored);
     throw std::runtime_error(path + ": cannot write the VDB file: " + e.what());
   }
 }

@@ -29,10 +29,10 @@ const std::vector<JwlParams>& library() {
        "rho0 1630 kg/m^3; AUTODYN cites Dobratz (1981) UCRL-52997; not verified against it"},
       {"CompB", 1717.0, 5.242e11, 7.678e9, 4.20, 1.10, 0.34, 8.5e9, 7980.0, 29.5e9,
        "Dobratz & Crawford (1985) UCRL-52997, Composition B Grade A; recalled values, checked "
-       "only through the C-J consistency test (tests/test_jwl.cpp)"},
+       "only through the C-J consistency test (tests/sim/eos/test_jwl.cpp)"},
       {"C-4", 1601.0, 6.0977e11, 1.295e10, 4.50, 1.40, 0.25, 9.0e9, 8193.0, 28.0e9,
        "Dobratz & Crawford (1985) UCRL-52997, C-4; recalled values, checked only through the "
-       "C-J consistency test (tests/test_jwl.cpp)"},
+       "C-J consistency test (tests/sim/eos/test_jwl.cpp)"},
   };
   return lib;
 }

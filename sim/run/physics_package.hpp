@@ -12,7 +12,9 @@
 //   limitKicks -> [leapfrog predict] -> afterDrift -> [pair passes, equation of state]
 //   -> updateState -> [force pass] -> evaluateDerivatives -> [leapfrog correct, equation of
 //   state] -> updateState -> finalize -> timestep
-// A package that keeps state between steps belongs to one Simulation.
+// initialise() and a delayed deposit's firing evaluate a state without stepping: updateState ->
+// evaluateDerivatives -> timestep only. A package that keeps state between steps belongs to one
+// Simulation.
 #include <limits>
 #include <string>
 
@@ -34,8 +36,10 @@ class PhysicsPackage {
  public:
   virtual ~PhysicsPackage() = default;
   virtual std::string name() const = 0;
-  // Declares the package's fields on the particles (ParticleSet::declare). Called once when the
-  // package joins a Simulation; on a restart the values read back from the snapshot are kept.
+  // Declares the package's fields on the particles (ParticleSet::declare) and gives them their
+  // starting values where the particles do not carry them yet. Called when the package joins a
+  // Simulation, and by the run on a snapshot's particles to learn their layout, so it must be
+  // idempotent: on a restart the values read back from the snapshot are kept.
   virtual void registerFields(ParticleSet& p) = 0;
   // Before each step's first kick: per-particle limits of the package's kicked fields
   // (Leapfrog::setCaps), from the state the step starts from.

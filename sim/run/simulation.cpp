@@ -93,8 +93,11 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
       throw SimulationError("particle id " + std::to_string(p_.id[i]) +
                             " has material index " + std::to_string(p_.material[i]) +
                             " but the scene defines " + std::to_string(materials_.size()));
-  // The scene's packages, each only where the scene asks for it (docs/design.md). The burn table
-  // checks the detonations even where no particle can burn.
+  // The scene's packages, each only where the scene asks for it (docs/design.md). Their order is
+  // the order of their hooks, and it matters to the last bit: the burn fraction scales the
+  // pressure before the damage releases tension (P f (1 - D), as the golden snapshots hold), and
+  // plasticity precedes failure at the end of a step. The burn table checks the detonations
+  // even where no particle can burn.
   BurnTable burn = burnTable(scene_.detonations, materials_);
   if (!scene_.detonations.empty() && !p_.hasBurn())
     throw SimulationError("scene '" + scene_.name + "' detonates an explosive but the particles "

@@ -44,6 +44,11 @@ struct DepositFiring {
 class Simulation {
  public:
   Simulation(Scene scene, ParticleSet particles, MaterialTable materials, int numThreads);
+  // Its packages hold state (the flaws, the leapfrog's caps): a copy would share them.
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+  Simulation(Simulation&&) = default;
+  Simulation& operator=(Simulation&&) = default;
 
   // Computes the derivatives of the current state and the next time step. Call once before the
   // first step() of a new run; a restarted run instead calls resume() with stored values.

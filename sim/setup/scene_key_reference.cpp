@@ -1,6 +1,6 @@
 // The key reference of docs/scenes.md, generated from the scene's schema (scene_schema.hpp), the
 // eos catalog and the material model families: `ejecta keys --markdown` prints it, and
-// tests/test_scene_key_reference.cpp checks that the doc holds exactly this text.
+// tests/sim/setup/test_scene_key_reference.cpp checks that the doc holds exactly this text.
 #include <sstream>
 #include <stdexcept>
 #include <string>

@@ -59,18 +59,6 @@ FlawActivity flawActivity(const ParticleSet& p, const Material& mat, const FlawS
 
 }  // namespace
 
-SymTensor effectiveStress(const ParticleSet& p, std::size_t i) {
-  return effectiveStress(p, i, false);
-}
-
-SymTensor effectiveStress(const ParticleSet& p, std::size_t i, bool yieldCarriesDamage) {
-  SymTensor sigma;
-  const double intact = yieldCarriesDamage ? 1.0 : 1.0 - p.damage(i);
-  for (int c = 0; c < p.stressComponents(); ++c) sigma[c] = intact * p.stress[c][i];
-  for (int c = 0; c < 3; ++c) sigma[c] -= p.P[i];
-  return sigma;
-}
-
 FlawSet distributeMaterialFlaws(const ParticleSet& initial, const MaterialTable& materials) {
   FlawSet set;
   bool any = false;

@@ -6,8 +6,9 @@
 #include <vector>
 
 #include "sim/solid/materials.hpp"
-#include "sim/state/particles.hpp"
 #include "sim/solid/weibull_flaws.hpp"
+#include "sim/state/particles.hpp"
+#include "sim/state/tensor.hpp"
 
 namespace ejecta {
 
@@ -60,9 +61,18 @@ double crackGrowthTimestep(const ParticleSet& p, const MaterialTable& materials)
 // tension to 0). Returns the number of particles that failed now.
 std::size_t applyFailure(ParticleSet& p, const MaterialTable& materials);
 
-// The full effective stress tensor of particle i: -P I + (1 - D) S (tension positive).
-SymTensor effectiveStress(const ParticleSet& p, std::size_t i);
-// The same with -P I + S when the material's yield surface carries the damage (Collins).
-SymTensor effectiveStress(const ParticleSet& p, std::size_t i, bool yieldCarriesDamage);
+// The full effective stress tensor of particle i: -P I + (1 - D) S (tension positive), or
+// -P I + S when the material's yield surface carries the damage (Collins). Inline: the force
+// pass builds it for every solid particle, twice with artificial stress.
+inline SymTensor effectiveStress(const ParticleSet& p, std::size_t i, bool yieldCarriesDamage) {
+  SymTensor sigma;
+  const double intact = yieldCarriesDamage ? 1.0 : 1.0 - p.damage(i);
+  for (int c = 0; c < p.stressComponents(); ++c) sigma[c] = intact * p.stress[c][i];
+  for (int c = 0; c < 3; ++c) sigma[c] -= p.P[i];
+  return sigma;
+}
+inline SymTensor effectiveStress(const ParticleSet& p, std::size_t i) {
+  return effectiveStress(p, i, false);
+}
 
 }  // namespace ejecta

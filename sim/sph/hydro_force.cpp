@@ -16,7 +16,6 @@
 #include <optional>
 #include <vector>
 
-#include "sim/solid/strength.hpp"
 #include "sim/sph/terms/artificial_conductivity.hpp"
 #include "sim/sph/terms/artificial_stress.hpp"
 #include "sim/sph/terms/monaghan_viscosity.hpp"

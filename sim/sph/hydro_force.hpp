@@ -9,7 +9,8 @@
 // alpha_ij = (alpha_i + alpha_j)/2 and beta_ij = (beta/alpha_max) alpha_ij (symmetric in i, j,
 // so momentum and energy stay conserved), and the pass also yields
 //   d alpha_i/dt = -(alpha_i - alpha_min) l c_i / h_i + max(-div v_i, 0) (alpha_max - alpha_i).
-// Optional artificial conductivity (Price 2008): du_i += sum_j m_j a_u v_sig (u_i-u_j)/rho_ij F.
+// Optional artificial conductivity (Price 2008): du_i += sum_j m_j a_u v_sig (u_i-u_j)/sigma_ij dW.
+// The optional terms are the pair terms of sim/sph/terms/.
 // RZ (ring masses, Brookshaw 2003 / Garcia-Senz et al. 2009 area-weighted form): rho^2 becomes
 // rho * eta and rho_ij becomes eta_ij; the hoop terms +P_i rt'/(rho_i rt_i) (radial acceleration)
 // and -P_i v_r rt'/(rho_i rt_i) (energy) complete the Lagrangian derivation (docs/rz.md).
@@ -19,7 +20,8 @@
 namespace ejecta {
 
 // Requires: density pass done, EOS evaluated, ghosts refreshed, pair lists built.
-// Produces a, du_dt for real particles.
+// Produces for the real particles a and du_dt; with continuity density drho_dt (and dh_dt for the
+// seed's h); with the switch dalpha_dt; for solids dstress_dt and the strain rate.
 void runForcePass(ParticleSet& p, HydroWorkspace& ws);
 
 // The viscosity switch's state, for a run whose scene turns it on and whose particles do not yet

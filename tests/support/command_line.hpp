@@ -1,5 +1,5 @@
 #pragma once
-// What the end-to-end tests (tests/test_chain_*.cpp) share: the `ejecta` binary of this build, a
+// What the end-to-end tests (tests/coupling/test_chain_*.cpp) share: the `ejecta` binary of this build, a
 // way to run it, and small file helpers.
 #include <sys/wait.h>
 

@@ -5,7 +5,7 @@
 namespace ejecta {
 
 void ProgrammedBurnPackage::registerFields(ParticleSet& p) {
-  if (!p.hasBurn())
+  if (!p.hasBurn())  // the Simulation adds the package only where they are: a misuse
     throw std::logic_error("programmed burn needs the particles' lighting times (build them with "
                            "buildParticles)");
 }

@@ -49,7 +49,7 @@ class MonaghanViscosity {
   // Pi_ij / sigma_ij: the pair's viscous pressure over density squared [m^2/s^2 per (kg/m^3)
   // in 3D] (its force is m_j Pi_ij dW/dr x_ij / r); 0 for a receding pair.
   double coefficient(const PairOrigin& o, const Pair& g) const {
-    if (g.vdotx >= 0.0) return 0.0;
+    if (!(g.vdotx < 0.0)) return 0.0;  // receding (or a NaN, which the health check reports)
     const std::size_t i = o.i, j = g.j;
     const double cij = 0.5 * (o.cs + cs_[j]);
     const double hij = 0.5 * (o.h + g.hj);

@@ -12,6 +12,7 @@
 #include "sim/exact/underwater_explosion_laws.hpp"
 #include "sim/setup/scene.hpp"
 #include "sim/verify/undex_reference.hpp"
+#include "support/tiny_undex.hpp"
 
 namespace ejecta {
 namespace {
@@ -48,51 +49,14 @@ TEST(UnderwaterExplosionLaws, ValuesOfDocsUndexTable) {
 
 // A 1 kg TNT sphere (the undex_rz charge) in a 0.3 m quarter of water: gauges on the axis at 0.1
 // m and on the diagonal.
-const char* kRzScene = R"(
-[scene]
-name = "tiny_undex"
-dimension = "rz"
-[domain]
-x = { min = 0.0, max = 0.3 }
-y = { min = 0.0, max = 0.3, lower = "wall", upper = "open" }
-[time]
-t_end = "0.1 ms"
-[[materials]]
-name = "water"
-eos = "mie_gruneisen"
-library = "water"
-[[materials]]
-name = "tnt"
-eos = "jwl"
-library = "TNT"
-[[bodies]]
-name = "charge"
-material = "tnt"
-shape = "sphere"
-center = [0.0, 0.0]
-radius = "5.27 cm"
-spacing = "5 mm"
-density = "1630 kg/m^3"
-[[bodies]]
-name = "water"
-material = "water"
-shape = "box"
-min = [0.0, 0.0]
-max = [0.3, 0.3]
-spacing = "5 mm"
-density = "1000 kg/m^3"
-pressure = "101325 Pa"
-[[detonations]]
-name = "centre"
-material = "tnt"
-point = [0.0, 0.0]
+const std::string kRzScene = test::tinyUndexRzScene(R"(
 [[gauges]]
 name = "axis"
 position = ["0.1 m", 0.0]
 [[gauges]]
 name = "diagonal"
 position = ["0.1 m", "0.1 m"]
-)";
+)");
 
 TEST(UndexReferenceScene, MapsAnRzChargeToASphere) {
   const Scene scene = parseScene(kRzScene, "tiny.toml");

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "support/command_line.hpp"
+#include "support/small_follower_study.hpp"
 #include "support/tiny_impact.hpp"
 
 namespace fs = std::filesystem;
@@ -57,31 +58,8 @@ name = "g1"
 position = [0.0, "-0.2 m"]
 )";
 
-// The study of tests/test_chain_thermal.cpp: a 0.1 m box coming down the axis over the crater,
-// the threshold lowered to 500 K to have emitters, fixed ray counts.
-const char* kStudy = R"(
-[study]
-name = "small_follower"
-[spacecraft]
-shape = "box"
-size = [0.1, 0.1, 0.1]
-[approach]
-target = [0.0, 0.0, 0.0]
-distance = "0.3 m"
-direction = [0.0, 1.0, 0.0]
-speed = "150 m/s"
-duration = "1 ms"
-samples = 3
-[emitters]
-min_temperature = 500.0
-[[walls]]
-layers = [{ material = "aluminium", thickness = "1 mm", cells = 10 }]
-[sizing]
-coatings = ["tungsten"]
-patches = ["side0"]
-[sampling]
-rays = 65536
-)";
+// The small follower study (tests/support/small_follower_study.hpp).
+const char* const kStudy = ejecta::test::kSmallFollowerStudy;
 
 // A printed value: the summary.json entry it shows, the factor it is printed with and its format.
 struct Printed {

@@ -578,7 +578,7 @@ TEST(Bodies, StudyScenesBuild) {
         options);
     ASSERT_TRUE(c.found) << c.note;
     // The lattice meets the bowl to within half a spacing, the level to within another half, and
-    // the measurement adds up to a spacing (tests/test_crater_particles.cpp): one spacing on the
+    // the measurement adds up to a spacing (tests/fields/test_crater_particles.cpp): one spacing on the
     // depth, two on the diameter (a spacing on each side).
     EXPECT_NEAR(c.depth, study.craterDepth, spacing);
     EXPECT_NEAR(c.apparentDiameter, study.craterDiameter, 2 * spacing);

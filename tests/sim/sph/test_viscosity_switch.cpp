@@ -131,7 +131,7 @@ TEST(ViscositySwitch, AlphaDecaysAsTheExactSolutionInGasAtRest) {
 
 // --- A strong blast: alpha's growth, conservation, determinism, restart ---------------------
 
-// tests/test_simulation.cpp's periodic 2D blast, with the switch on.
+// tests/sim/run/test_simulation.cpp's periodic 2D blast, with the switch on.
 const std::string kBlastScene =
     test::periodicBlastScene("[sph.viscosity]\nswitch = \"morris_monaghan\"\n");
 
@@ -160,7 +160,7 @@ TEST(ViscositySwitch, StrongBlastRaisesAlphaAndConservesEnergy) {
   // double from alpha_min = 0.1, and never pass alpha_max.
   EXPECT_GT(alphaPeak, 0.2);
   EXPECT_LE(alphaPeak, 1.0);
-  // As tests/test_simulation.cpp asserts for constant alpha (measured ~1e-4 there).
+  // As tests/sim/run/test_simulation.cpp asserts for constant alpha (measured ~1e-4 there).
   EXPECT_LT(std::abs(r.summary.energy.relativeError), 1e-3);
   double scale = 0.0;
   const ParticleSet& p = sim.particles();

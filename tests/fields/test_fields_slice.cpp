@@ -366,7 +366,7 @@ TEST_F(SliceFiles, FogIsoSurfaceIsTheSphereFacingOutwards) {
                 R / a, m.size(), areaError[level], areaError[level] / q, volumeError);
     // The fog is linear in r between voxel centres only along the axes; its trilinear
     // interpolation and volumeToMesh's flat quads cut inside the curved surface by O(a^2/R), as
-    // for the level set (tests/test_fields_surface.cpp). Bounds: 1.5 and 2.5 (a/R)^2.
+    // for the level set (tests/fields/test_fields_surface.cpp). Bounds: 1.5 and 2.5 (a/R)^2.
     EXPECT_LT(std::abs(areaError[level]), 1.5 * q);
     EXPECT_LT(std::abs(volumeError), 2.5 * q);
     // Outwards: every triangle's right-hand normal points away from the centre.

@@ -153,3 +153,30 @@ TEST(Units, DescribesDimensions) {
 
 }  // namespace
 }  // namespace ejecta
+
+namespace ejecta {
+namespace {
+
+// Degrees Celsius are a level offset by 273.15 K (ITS-90), so they are read only as a temperature
+// on its own; in a compound unit (a heat capacity per degree) they are refused with the reason.
+TEST(Units, CelsiusIsAnOffsetTemperatureOnItsOwn) {
+  EXPECT_DOUBLE_EQ(parseQuantity("20 degC", Dimension::Temperature), 293.15);
+  EXPECT_DOUBLE_EQ(parseQuantity("-273.15 \u00b0C", Dimension::Temperature), 0.0);
+  EXPECT_DOUBLE_EQ(parseQuantity("1500 K", Dimension::Temperature), 1500.0);
+  try {
+    parseQuantity("20 degC", Dimension::Length);
+    FAIL() << "a Celsius temperature read as a length";
+  } catch (const UnitError& e) {
+    EXPECT_NE(std::string(e.what()).find("expected a length, got a temperature"), std::string::npos)
+        << e.what();
+  }
+  try {
+    parseQuantity("900 J/kg/degC", Dimension{0, 2, -2, -1}  /* J/(kg K) */);
+    FAIL() << "Celsius inside a compound unit accepted";
+  } catch (const UnitError& e) {
+    EXPECT_NE(std::string(e.what()).find("offset scale"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace ejecta

@@ -200,7 +200,7 @@ TEST(ViscosityReconstruction, ASoundWaveIsHardlyDamped) {
 
 // --- Conservation, mirror walls, threads, restarts ----------------------------------------------
 
-// tests/test_simulation.cpp's periodic 2D blast with the reconstruction on.
+// tests/sim/run/test_simulation.cpp's periodic 2D blast with the reconstruction on.
 Simulation makeBlast(const std::string& reconstruction, int threads,
                      std::vector<std::string> overrides = {}) {
   // Off the lattice's centre of symmetry: a centred blast has zero total momentum by symmetry
@@ -222,7 +222,7 @@ TEST(ViscosityReconstruction, StrongBlastConservesEnergyAndMomentum) {
     ASSERT_TRUE(r.ok) << r.error;
     std::printf("blast (%s): energy error %.2e, %ld steps\n", reconstruction,
                 r.summary.energy.relativeError, r.summary.steps);
-    // As tests/test_simulation.cpp asserts for the plain viscosity (measured ~1e-4 there).
+    // As tests/sim/run/test_simulation.cpp asserts for the plain viscosity (measured ~1e-4 there).
     EXPECT_LT(std::abs(r.summary.energy.relativeError), 1e-3);
     // The pair viscosity is symmetric in i and j (the limiter is symmetric under r -> 1/r), so
     // momentum is conserved to round-off of the sum of |m v|.

@@ -261,7 +261,7 @@ TEST_F(RenderGrids, SphereIsoSurfaceIsADiscOfTheProjectedRadius) {
     std::printf("%s: disc radius %.2f px (expected %.2f), centre (%.2f, %.2f) in a %d x %d picture\n",
                 choice.empty() ? "default (surface level set)" : choice.c_str(), disc.radius, expected, disc.cx,
                 disc.cy, r.width, r.height);
-    // The mesh lies inside the sphere by O(a^2/R) (tests/test_fields_slice.cpp: about 0.1% of R,
+    // The mesh lies inside the sphere by O(a^2/R) (tests/fields/test_fields_slice.cpp: about 0.1% of R,
     // a quarter pixel here) and the disc's edge pixels are whole pixels: 1.5 px.
     EXPECT_NEAR(disc.radius, expected, 1.5) << out;
     EXPECT_GT(expected, 100.0);

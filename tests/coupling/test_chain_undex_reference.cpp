@@ -20,6 +20,7 @@
 #include "sim/eos/jwl.hpp"
 #include "sim/eos/mie_gruneisen.hpp"
 #include "support/command_line.hpp"
+#include "support/tiny_undex.hpp"
 
 namespace fs = std::filesystem;
 
@@ -62,44 +63,7 @@ Csv readCsv(const fs::path& path) {
 
 // A 1 kg TNT sphere (the undex_rz charge) in a 0.3 m quarter of water, to 0.1 ms: gauges on the
 // axis at 0.1 m and 0.1414 m, and one on the diagonal at the same 0.1414 m.
-const char* kTinyRz = R"(
-[scene]
-name = "tiny_undex"
-dimension = "rz"
-[domain]
-x = { min = 0.0, max = 0.3 }
-y = { min = 0.0, max = 0.3, lower = "wall", upper = "open" }
-[time]
-t_end = "0.1 ms"
-[[materials]]
-name = "water"
-eos = "mie_gruneisen"
-library = "water"
-[[materials]]
-name = "tnt"
-eos = "jwl"
-library = "TNT"
-[[bodies]]
-name = "charge"
-material = "tnt"
-shape = "sphere"
-center = [0.0, 0.0]
-radius = "5.27 cm"
-spacing = "5 mm"
-density = "1630 kg/m^3"
-[[bodies]]
-name = "water"
-material = "water"
-shape = "box"
-min = [0.0, 0.0]
-max = [0.3, 0.3]
-spacing = "5 mm"
-density = "1000 kg/m^3"
-pressure = "101325 Pa"
-[[detonations]]
-name = "centre"
-material = "tnt"
-point = [0.0, 0.0]
+const std::string kTinyRz = ejecta::test::tinyUndexRzScene(R"(
 [[gauges]]
 name = "g100"
 position = ["0.1 m", 0.0]
@@ -109,7 +73,7 @@ position = ["0.141421356 m", 0.0]
 [[gauges]]
 name = "diagonal"
 position = ["0.1 m", "0.1 m"]
-)";
+)");
 
 TEST(UndexReference, SphericalChargeWritesTheGaugesAndColesValues) {
   const fs::path dir = tempDir("rz");

@@ -19,6 +19,7 @@
 #include "radiation/constants.hpp"
 #include "render/charts.hpp"
 #include "support/command_line.hpp"
+#include "support/small_follower_study.hpp"
 #include "support/tiny_impact.hpp"
 
 namespace fs = std::filesystem;
@@ -31,33 +32,8 @@ using ejecta::test::runCommand;
 using ejecta::test::readTextFile;
 using ejecta::test::writeTextFile;
 
-// A 0.1 m box coming down the axis towards the crater of the tiny impact (its target's top at
-// y = 0; the RZ axis is the world y axis), 0.3 m to 0.15 m above it. The tiny impact at 3 km/s
-// heats the crater floor to about 1e3 K, so the study's threshold is lowered to 500 K to have
-// emitters; fixed ray counts keep it fast and deterministic.
-const char* kStudy = R"(
-[study]
-name = "small_follower"
-[spacecraft]
-shape = "box"
-size = [0.1, 0.1, 0.1]
-[approach]
-target = [0.0, 0.0, 0.0]
-distance = "0.3 m"
-direction = [0.0, 1.0, 0.0]
-speed = "150 m/s"
-duration = "1 ms"
-samples = 3
-[emitters]
-min_temperature = 500.0
-[[walls]]
-layers = [{ material = "aluminium", thickness = "1 mm", cells = 10 }]
-[sizing]
-coatings = ["tungsten"]
-patches = ["side0"]
-[sampling]
-rays = 65536
-)";
+// The small follower study (tests/support/small_follower_study.hpp).
+const char* const kStudy = ejecta::test::kSmallFollowerStudy;
 
 const Json* patch(const Json& thermal, const std::string& name) {
   for (const Json& p : thermal["patches"])
