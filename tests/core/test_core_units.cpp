@@ -167,7 +167,7 @@ TEST(Units, CelsiusIsAnOffsetTemperatureOnItsOwn) {
     parseQuantity("20 degC", Dimension::Length);
     FAIL() << "a Celsius temperature read as a length";
   } catch (const UnitError& e) {
-    EXPECT_NE(std::string(e.what()).find("expected a length, got a temperature"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("got a temperature"), std::string::npos)
         << e.what();
   }
   try {

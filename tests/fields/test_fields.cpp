@@ -352,18 +352,24 @@ TEST_F(GridFiles, VdbPrintReadsTheFile) {
 TEST_F(GridFiles, FailedWriteLeavesTheEarlierFileIntact) {
   const ParticleSet p = lattice(Geometry::Spatial, 0.0, 1.0, 0.2);
   const GridSet set = buildGridSet(p, context(Geometry::Spatial), request({"density"}, 0.1));
-  const std::string path = (dir_ / "keep.vdb").string();
-  writeGridFile(path, set, meta());
+  // The write goes to a unique temporary beside the target (".NAME.tmp-<tag>", core/atomic_file),
+  // so a target name of 240 characters is valid while its temporary's passes the file system's
+  // 255 (NAME_MAX): the write then fails before anything reaches the earlier file.
+  const std::string name = std::string(236, 'k') + ".vdb";
+  const std::string path = (dir_ / name).string();
+  writeGridFile((dir_ / "keep.vdb").string(), set, meta());
+  fs::copy_file(dir_ / "keep.vdb", path);
   const auto size = fs::file_size(path);
-  fs::create_directories(path + ".tmp/blocker");  // the temporary name cannot be written
   try {
     writeGridFile(path, set, meta());
-    FAIL() << "write to a blocked temporary name succeeded";
+    FAIL() << "write through a temporary whose name is too long succeeded";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("keep.vdb"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
   }
   EXPECT_EQ(fs::file_size(path), size);
   EXPECT_EQ(readGridFileInfo(path).size(), 2u);  // density and the surface
+  for (const auto& entry : fs::directory_iterator(dir_))  // no temporary left behind
+    EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos) << entry.path();
   EXPECT_THROW(readGridFileInfo((dir_ / "missing.vdb").string()), std::runtime_error);
 }
 
