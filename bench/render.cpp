@@ -197,7 +197,7 @@ int runOnce(const Options& o) {
       RenderSettings settings;
       settings.width = settings.height = size;
       renderer.setSettings(settings);
-      Scene scene;
+      Picture scene;
       ParticleLayer layer;
       layer.x = body.x;
       layer.y = body.y;

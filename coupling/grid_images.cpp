@@ -187,7 +187,7 @@ GridImageSummary writeGridSliceImage(render::Renderer& renderer, const std::file
     spec.max = (*range)[1];
   }
 
-  render::Scene scene;
+  render::Picture scene;
   scene.slices.push_back(layer);
   const std::string axis = kAxisNames[options.axis];
   scene.annotations.title = options.title.empty()
@@ -312,7 +312,7 @@ GridImageSummary writeIsoSurfaceImage(render::Renderer& renderer, const std::fil
     plainCap = capMesh(*inside, isInside);
   }
 
-  render::Scene scene;
+  render::Picture scene;
   if (cap.nx > 0) scene.slices.push_back(cap);
   scene.meshes.push_back(surface);
   if (!plainCap.triangles.empty()) {

@@ -72,7 +72,7 @@ void writeParticleImage(render::Renderer& renderer, const ParticleSet& p, Geomet
                         double time, const std::string& sceneName,
                         const ParticleImageOptions& options, const std::filesystem::path& out) {
   std::vector<double> values;
-  render::Scene scene;
+  render::Picture scene;
   scene.particles.push_back(particleLayer(p, geometry, options, values));
   scene.annotations.title = options.title.empty() ? sceneName + ": " + options.field : options.title;
   scene.annotations.time = time;

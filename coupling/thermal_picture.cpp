@@ -112,7 +112,7 @@ void writeThermalPicture(render::Renderer& renderer, const ParticleSet& particle
   body.shaded = !planar;
   body.colorBar = false;
 
-  render::Scene scene;
+  render::Picture scene;
   scene.meshes.push_back(body);
   scene.particles.push_back(hot);
   scene.annotations.title = title;

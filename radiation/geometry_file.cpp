@@ -15,8 +15,8 @@ namespace ejecta::radiation {
 
 namespace {
 
-TriangleMesh buildShape(const ShapeSpec& s, const std::string& source) {
-  using K = ShapeSpec::Kind;
+TriangleMesh buildShape(const SurfaceShape& s, const std::string& source) {
+  using K = SurfaceShape::Kind;
   switch (s.kind) {
     case K::Box: return makeBox(s.size[0], s.size[1], s.size[2]);
     case K::Cylinder: return makeCylinder(s.radius, s.length, s.segments, s.sectors);
@@ -119,7 +119,7 @@ SceneParts buildParts(const GeometryConfig& config) {
   SceneParts parts;
   try {
     if (config.spacecraft) parts.body = buildShape(config.spacecraft->body, config.source);
-    for (const ShapeSpec& s : config.surfaces) {
+    for (const SurfaceShape& s : config.surfaces) {
       const TriangleMesh plate = buildShape(s, config.source);
       for (const std::string& name : plate.patchNames)
         if (parts.body.findPatch(name) >= 0 || parts.plates.findPatch(name) >= 0)

@@ -29,7 +29,7 @@ class GeometryFileError : public InputError {
 };
 
 // A surface given by shape: the spacecraft body, a plate, the occluder.
-struct ShapeSpec {
+struct SurfaceShape {
   enum class Kind { Box, Cylinder, Rectangle, Disc, Sphere, Mesh };
   Kind kind = Kind::Box;
   std::string name;                 // patch name (rectangle, disc, sphere); mesh: unnamed faces
@@ -46,7 +46,7 @@ struct ShapeSpec {
 };
 
 struct SpacecraftSpec {
-  ShapeSpec body;
+  SurfaceShape body;
   Pose pose;
   std::vector<double> times{0.0};   // evaluate at pose.at(t) for each t [s]
 };
@@ -68,7 +68,7 @@ struct EmitterSpec {
 };
 
 struct OccluderSpec {
-  ShapeSpec shape;
+  SurfaceShape shape;
   double temperature = 0.0;         // [K]; > 0: it emits too
   double emissivity = kGraniteEmissivity;
 };
@@ -91,7 +91,7 @@ struct GeometryConfig {
   std::string source;               // the file name, for messages and the report
   std::string name, description;
   std::optional<SpacecraftSpec> spacecraft;
-  std::vector<ShapeSpec> surfaces;  // fixed plates (not moved with the spacecraft)
+  std::vector<SurfaceShape> surfaces;  // fixed plates (not moved with the spacecraft)
   std::vector<EmitterSpec> emitters;
   double minTemperature = kMoltenRockThreshold;
   std::optional<OccluderSpec> occluder;

@@ -150,7 +150,7 @@ EmitterSpec readEmitter(const TableReader& t) {
 
 OccluderSpec readOccluder(const TableReader& t, const fs::path& base) {
   OccluderSpec occ;
-  using K = ShapeSpec::Kind;
+  using K = SurfaceShape::Kind;
   occ.shape.kind = requireEnum<K>(t, "shape", {{"sphere", K::Sphere}, {"mesh", K::Mesh}});
   occ.shape.name = "occluder";
   if (occ.shape.kind == K::Sphere) {
@@ -249,9 +249,9 @@ GeometryConfig validate(const config::Context& ctx, const TableReader& top, cons
 
 }  // namespace
 
-ShapeSpec readShape(const TableReader& t, ShapeRole role, const fs::path& base) {
-  ShapeSpec s;
-  using K = ShapeSpec::Kind;
+SurfaceShape readShape(const TableReader& t, ShapeRole role, const fs::path& base) {
+  SurfaceShape s;
+  using K = SurfaceShape::Kind;
   const bool spacecraft = role != ShapeRole::Plate;
   const bool defaults = role == ShapeRole::StudyBody;  // a thermal study's body: a 1 m box unless told
   if (defaults && !t.has("shape")) s.kind = K::Box;

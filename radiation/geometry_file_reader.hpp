@@ -15,6 +15,6 @@ enum class ShapeRole {
 };
 
 // The shape of table `t`; a relative mesh path is taken from `base`. Raises the Context's error.
-ShapeSpec readShape(const config::TableReader& t, ShapeRole role, const std::filesystem::path& base);
+SurfaceShape readShape(const config::TableReader& t, ShapeRole role, const std::filesystem::path& base);
 
 }  // namespace ejecta::radiation

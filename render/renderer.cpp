@@ -47,8 +47,8 @@ Renderer::~Renderer() = default;
 
 std::string Renderer::glRenderer() const { return impl_->context.rendererName(); }
 
-Frame Renderer::render(const Scene& scene, const View& view) {
-  validateScene(scene, view);
+Frame Renderer::render(const Picture& scene, const View& view) {
+  validatePicture(scene, view);
   const int width = settings_.width, height = settings_.height;
   if (width <= 0 || height <= 0)
     throw std::invalid_argument("image size must be positive, got " + std::to_string(width) +
@@ -84,7 +84,7 @@ Frame Renderer::render(const Scene& scene, const View& view) {
                                 std::to_string(height) + " pixels is too small for its " +
                                 std::to_string(strip) + "-pixel annotation strip");
   const bool mirror = view.kind == ViewKind::Axisymmetric;
-  frame.framing = frameView(view, measureScene(scene, mirror), width, plotHeight);
+  frame.framing = frameView(view, measurePicture(scene, mirror), width, plotHeight);
 
   OffscreenContext& context = impl_->context;
   if (context.width() != width || context.height() != height)

@@ -1,10 +1,10 @@
 #pragma once
-// Off-screen images of a Scene: particles, meshes and slices drawn with OpenGL by OSMesa
+// Off-screen images of a Picture: particles, meshes and slices drawn with OpenGL by OSMesa
 // (llvmpipe, no display needed), then the annotation strip drawn underneath on the CPU.
 // docs/render.md.
 //
 //   ejecta::render::Renderer renderer({.width = 1024, .height = 1024});
-//   Scene scene;
+//   Picture scene;
 //   scene.particles.push_back({.x = x, .y = y, .h = h, .values = rho, .field = "density",
 //                              .units = "kg/m^3"});
 //   scene.annotations.time = 1.2e-3;
@@ -40,10 +40,10 @@ class Renderer {
   const RenderSettings& settings() const { return settings_; }
   void setSettings(const RenderSettings& settings) { settings_ = settings; }
 
-  // Draws the scene. Throws std::invalid_argument for an invalid scene or view (validateScene,
+  // Draws the scene. Throws std::invalid_argument for an invalid scene or view (validatePicture,
   // frameView) and an image too small for its annotation strip. Not thread safe: one renderer
   // draws on one thread at a time (use one renderer per thread).
-  Frame render(const Scene& scene, const View& view);
+  Frame render(const Picture& scene, const View& view);
 
   // The OpenGL implementation, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
   std::string glRenderer() const;

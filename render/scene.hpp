@@ -112,7 +112,9 @@ struct Annotations {
   bool colorBars = true;         // one per layer that asks for it
 };
 
-struct Scene {
+// What one image draws: its layers and the strip under it. (Not a scene file: that is
+// ejecta::Scene, sim/setup/scene.hpp.)
+struct Picture {
   std::vector<SliceLayer> slices{};        // drawn first,
   std::vector<MeshLayer> meshes{};         // then meshes,
   std::vector<ParticleLayer> particles{};  // then particles (depth-tested in 3D)
@@ -135,6 +137,6 @@ namespace ejecta::render {
 // Throws std::invalid_argument naming the layer (kind and index), the array and the reason:
 // arrays of unequal lengths, a triangle index beyond the vertices, a slice whose value count
 // is not nx * ny or whose spacing is not positive, more than 4 clip planes or a zero normal.
-void validateScene(const Scene& scene, const View& view);
+void validatePicture(const Picture& scene, const View& view);
 
 }  // namespace ejecta::render

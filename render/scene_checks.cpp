@@ -16,7 +16,7 @@ std::string count(std::size_t n, const char* what) { return std::to_string(n) + 
 
 }  // namespace
 
-void validateScene(const Scene& scene, const View& view) {
+void validatePicture(const Picture& scene, const View& view) {
   for (std::size_t l = 0; l < scene.particles.size(); ++l) {
     const ParticleLayer& p = scene.particles[l];
     const std::size_t n = p.x.size();

@@ -155,8 +155,8 @@ Vec3 Bounds::center() const {
   return {(lo[0] + hi[0]) / 2.0, (lo[1] + hi[1]) / 2.0, (lo[2] + hi[2]) / 2.0};
 }
 
-SceneExtent measureScene(const Scene& scene, bool mirror) {
-  SceneExtent extent;
+PictureExtent measurePicture(const Picture& scene, bool mirror) {
+  PictureExtent extent;
   Bounds& b = extent.bounds;
   for (const ParticleLayer& layer : scene.particles) b.add(particleBounds(layer));
   for (const MeshLayer& layer : scene.meshes)
@@ -199,7 +199,7 @@ std::array<double, 3> Framing::project(const Vec3& world) const {
   return {x, y, clip[3]};
 }
 
-Framing frameView(const View& view, const SceneExtent& extent, int plotWidth, int plotHeight) {
+Framing frameView(const View& view, const PictureExtent& extent, int plotWidth, int plotHeight) {
   if (plotWidth <= 0 || plotHeight <= 0)
     throw std::invalid_argument("view: the picture has no pixels (" + std::to_string(plotWidth) +
                                 " x " + std::to_string(plotHeight) + ")");

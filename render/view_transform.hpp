@@ -23,12 +23,12 @@ std::array<Vec3, 4> sliceCorners(const SliceLayer& slice);
 
 // Everything the scene draws (particles padded by their disc radius; in an Axisymmetric view
 // mirrored about the axis), and the radius of the sphere about bounds.center() holding it.
-struct SceneExtent {
+struct PictureExtent {
   Bounds bounds;
   double radius = 0.0;
 };
-// The scene must be valid (validateScene).
-SceneExtent measureScene(const Scene& scene, bool mirror);
+// The scene must be valid (validatePicture).
+PictureExtent measurePicture(const Picture& scene, bool mirror);
 
 using Mat4 = std::array<double, 16>;  // column-major, as OpenGL takes it
 
@@ -53,6 +53,6 @@ struct Framing {
 
 // Throws std::invalid_argument for a non-positive plot size or view width, a degenerate camera
 // (position at target, up along the line of sight) or a field of view outside (0, 180).
-Framing frameView(const View& view, const SceneExtent& extent, int plotWidth, int plotHeight);
+Framing frameView(const View& view, const PictureExtent& extent, int plotWidth, int plotHeight);
 
 }  // namespace ejecta::render

@@ -81,7 +81,7 @@ TEST(RenderMesh, SpacecraftFacesTakeTheirScalarsColour) {
   craft.quad(-1.0, -1.0, 1.0, 1.0);
   craft.quad(2.0, -1.0, 4.0, 1.0);
   const std::vector<double> flux{1e3, 1e3, 1e4, 1e4, 1e5, 1e5};  // per triangle
-  Scene scene;
+  Picture scene;
   scene.meshes.push_back(craft.layer());
   scene.meshes.back().triangleValues = flux;
   scene.meshes.back().scale.map = ColorMapName::Inferno;
@@ -113,7 +113,7 @@ TEST(RenderMesh, HeadlightShadingFollowsLambert) {
                     {2.0 * c, 1.0, 2.0 * s},
                     {-2.0 * c, 1.0, -2.0 * s}};
   panel.triangles = {{0, 1, 2}, {0, 2, 3}};
-  Scene scene;
+  Picture scene;
   scene.meshes.push_back(panel.layer());
   scene.meshes.back().color = {1.0f, 1.0f, 1.0f};
   scene.annotations = none();
@@ -135,7 +135,7 @@ TEST(RenderMesh, VertexValuesAreInterpolatedAlongTheMap) {
   Mesh strip;
   strip.quad(-4.0, -1.0, 4.0, 1.0);
   const std::vector<double> values{0.0, 1.0, 1.0, 0.0};
-  Scene scene;
+  Picture scene;
   scene.meshes.push_back(strip.layer());
   scene.meshes.back().vertexValues = values;
   scene.meshes.back().shaded = false;
@@ -155,7 +155,7 @@ TEST(RenderMesh, VertexValuesAreInterpolatedAlongTheMap) {
 TEST(RenderMesh, ClippingPlaneCutsAMesh) {
   Mesh strip;
   strip.quad(-4.0, -1.0, 4.0, 1.0);
-  Scene scene;
+  Picture scene;
   scene.meshes.push_back(strip.layer());
   scene.meshes.back().color = {0.0f, 0.0f, 0.0f};
   scene.annotations = none();
@@ -190,7 +190,7 @@ struct Slice {
 
 TEST(RenderMesh, SliceCellsTakeTheirValuesColour) {
   const Slice slice;
-  Scene scene;
+  Picture scene;
   scene.slices.push_back(slice.layer());
   scene.annotations = none();
   const Frame f = renderer().render(scene, planeView());
@@ -222,7 +222,7 @@ TEST(RenderMesh, AxisymmetricSliceIsMirrored) {
   s.values = values;
   s.origin = {0.5, 0.0, 0.0};
   s.spacing = {1.0, 1.0};
-  Scene scene;
+  Picture scene;
   scene.slices.push_back(s);
   scene.annotations = none();
   View v = planeView();
@@ -241,7 +241,7 @@ TEST(RenderMesh, OneSceneWithParticlesMeshAndSlice) {
   craft.quad(3.0, -2.0, 4.5, 2.0);
   const std::vector<double> temperature{400.0, 900.0};
   const std::vector<double> x{-1.5}, y{-1.0}, h{0.4}, rho{2700.0};
-  Scene scene;
+  Picture scene;
   scene.slices.push_back(slice.layer());
   scene.meshes.push_back(craft.layer());
   scene.meshes.back().triangleValues = temperature;
@@ -286,7 +286,7 @@ TEST(RenderMesh, RejectsBadMeshesAndSlices) {
   Mesh bad;
   bad.quad(0.0, 0.0, 1.0, 1.0);
   bad.triangles.push_back({0, 1, 9});
-  Scene scene;
+  Picture scene;
   scene.meshes.push_back(bad.layer());
   try {
     renderer().render(scene, planeView());
@@ -296,14 +296,14 @@ TEST(RenderMesh, RejectsBadMeshesAndSlices) {
     EXPECT_NE(what.find("mesh layer 0"), std::string::npos) << what;
     EXPECT_NE(what.find("triangle 2 uses vertex 9"), std::string::npos) << what;
   }
-  Scene slices;
+  Picture slices;
   const Slice slice;
   slices.slices.push_back(slice.layer());
   slices.slices.back().nx = 5;
   EXPECT_THROW(renderer().render(slices, planeView()), std::invalid_argument);
   View tooMany = planeView();
   tooMany.clipPlanes.resize(5);
-  EXPECT_THROW(renderer().render(Scene{}, tooMany), std::invalid_argument);
+  EXPECT_THROW(renderer().render(Picture{}, tooMany), std::invalid_argument);
 }
 
 }  // namespace

@@ -94,7 +94,7 @@ TEST(RenderParticles, LandOnTheExpectedPixelWithYUp) {
   r.setSettings(size(200, 100));
   // h = 0.5 m, disc radius h/2 = 0.25 m = 5 pixels.
   Particles p{{worldX(150)}, {worldY(25)}, {}, {0.5}, {}};
-  Scene scene;
+  Picture scene;
   scene.particles.push_back(p.layer());
   scene.particles.back().color = {1.0f, 0.0f, 0.0f};
   scene.annotations = none();
@@ -124,7 +124,7 @@ TEST(RenderParticles, AxisymmetricViewMirrorsAboutTheAxis) {
   Renderer& r = renderer();
   r.setSettings(size(200, 100));
   Particles p{{worldX(150)}, {worldY(70)}, {}, {0.5}, {}};  // r = 2.525 m, z = -1.025 m
-  Scene scene;
+  Picture scene;
   scene.particles.push_back(p.layer());
   scene.particles.back().color = {0.0f, 0.0f, 1.0f};
   scene.annotations = none();
@@ -149,7 +149,7 @@ TEST(RenderParticles, PerspectiveProjectionAndAClippingPlaneCut) {
   // pixel x = 100 (1 + x / (10 - z)).
   // Discs of radius 1 m: 2 * 1 m * 100 px / distance across, 18.2 and 22.2 pixels.
   Particles p{{-1.0, 1.0}, {0.0, 0.0}, {-1.0, 1.0}, {2.0, 2.0}, {}};
-  Scene scene;
+  Picture scene;
   scene.particles.push_back(p.layer());
   scene.particles.back().color = {0.0f, 0.5f, 0.0f};
   scene.annotations = none();
@@ -184,7 +184,7 @@ TEST(RenderParticles, LogScaleGivesEachDecadeAnEqualShareOfTheMap) {
               {},
               {0.5, 0.5, 0.5, 0.5},
               {1.0, 10.0, 100.0, 1000.0}};
-  Scene scene;
+  Picture scene;
   scene.particles.push_back(p.layer());
   scene.particles.back().scale.kind = ScaleKind::Log;
   scene.annotations = none();
@@ -204,7 +204,7 @@ TEST(RenderParticles, ShadedDiscsAreBrightestInTheMiddle) {
   Renderer& r = renderer();
   r.setSettings(size(200, 100));
   Particles p{{worldX(100)}, {worldY(50)}, {}, {2.0}, {}};  // radius 1 m = 20 pixels
-  Scene scene;
+  Picture scene;
   scene.particles.push_back(p.layer(ParticleStyle::Shaded));
   scene.particles.back().color = {1.0f, 1.0f, 1.0f};
   scene.annotations = none();
@@ -226,7 +226,7 @@ TEST(RenderParticles, AutoFitShowsEveryParticle) {
   r.setSettings(size(200, 100));
   // A spread of particles far from the origin; no centre or width given.
   Particles p{{1000.0, 1040.0, 1010.0}, {-500.0, -480.0, -470.0}, {}, {1.0, 1.0, 1.0}, {}};
-  Scene scene;
+  Picture scene;
   scene.particles.push_back(p.layer());
   scene.particles.back().color = {0.0f, 0.0f, 0.0f};
   scene.annotations = none();
@@ -249,7 +249,7 @@ TEST(RenderParticles, ColourBarEndsAreTheMapsEndColours) {
   Renderer& r = renderer();
   r.setSettings(size(400, 300));
   Particles p{{0.0, 1.0}, {0.0, 1.0}, {}, {0.5, 0.5}, {2.0, 7.0}};
-  Scene scene;
+  Picture scene;
   scene.particles.push_back(p.layer());
   scene.particles.back().field = "density";
   scene.particles.back().units = "kg/m^3";
@@ -298,7 +298,7 @@ TEST(RenderParticles, SameImageForAnyOpenMPThreadCount) {
     p.h.push_back(0.3 + 0.3 * next());
     p.values.push_back(next());
   }
-  Scene scene;
+  Picture scene;
   scene.particles.push_back(p.layer(ParticleStyle::Shaded));
   const int threads = omp_get_max_threads();
   omp_set_num_threads(1);
@@ -315,7 +315,7 @@ TEST(RenderParticles, RejectsInconsistentLayers) {
   Renderer& r = renderer();
   r.setSettings(size(200, 100));
   Particles p{{0.0, 1.0}, {0.0, 1.0}, {}, {0.5}, {}};
-  Scene scene;
+  Picture scene;
   scene.particles.push_back(p.layer());
   try {
     r.render(scene, View{});
