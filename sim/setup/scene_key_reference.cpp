@@ -10,7 +10,7 @@
 #include "sim/eos/eos_catalog.hpp"
 #include "sim/setup/scene_schema.hpp"
 #include "sim/solid/model_keys.hpp"
-#include "sim/solid/strength.hpp"
+#include "sim/solid/strength_library.hpp"
 #include "sim/solid/thermal.hpp"
 
 namespace ejecta {

@@ -21,6 +21,11 @@ struct ModelSpec {
       if (k == key) return &v;
     return nullptr;
   }
+  // The value of `key`, or `fallback` where the table does not give it.
+  double valueOr(std::string_view key, double fallback) const {
+    const double* v = find(key);
+    return v ? *v : fallback;
+  }
 };
 
 struct MaterialSpec {

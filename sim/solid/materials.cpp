@@ -7,6 +7,7 @@
 #include "core/input_error.hpp"
 #include "sim/eos/eos_catalog.hpp"
 #include "sim/solid/material_spec.hpp"
+#include "sim/solid/strength_catalog.hpp"
 
 namespace ejecta {
 
@@ -52,72 +53,8 @@ ThermalModel makeThermal(const MaterialSpec& spec, const std::optional<double>& 
 }
 
 std::optional<StrengthModel> makeStrength(const MaterialSpec& spec, std::optional<double>& melt) {
-  const ModelSpec& s = spec.strength;
-  if (!s.present) return std::nullopt;
-  StrengthModel model;
-  const StrengthLibraryEntry* entry = nullptr;
-  if (!s.library.empty()) {
-    entry = findStrengthEntry(s.library);
-    if (!entry) {
-      std::string known;
-      for (const StrengthLibraryEntry& e : strengthLibrary()) known += (known.empty() ? "" : ", ") + e.name;
-      fail("strength.library: no entry '" + s.library + "'; known: " + known);
-    }
-    model.shearModulus = entry->shearModulus;
-    model.yieldStress = entry->yieldStress;
-    model.johnsonCook = entry->johnsonCook;
-    melt = entry->meltTemperature;
-  }
-  model.yield = s.model == "elastic"     ? YieldModel::Elastic
-                : s.model == "von_mises" ? YieldModel::VonMises
-                : s.model == "collins"   ? YieldModel::Collins
-                                         : YieldModel::JohnsonCook;
-  model.shearModulus = valueOr(s, "shear_modulus", model.shearModulus);
-  if (!(model.shearModulus > 0.0)) fail("strength.shear_modulus is required and must be positive");
-  if (model.yield == YieldModel::VonMises) {
-    model.yieldStress = valueOr(s, "yield_stress", model.yieldStress);
-    if (!s.find("yield_stress") && !(entry && entry->yield == YieldModel::VonMises))
-      fail("strength.yield_stress is required for model \"von_mises\"");
-  }
-  if (model.yield == YieldModel::JohnsonCook) {
-    JohnsonCookParameters& jc = model.johnsonCook;
-    const bool fromLibrary = entry && entry->yield == YieldModel::JohnsonCook;
-    for (const char* key : {"A", "B", "n", "C", "m"})
-      if (!fromLibrary && !s.find(key))
-        fail(std::string("strength.") + key + " is required for model \"johnson_cook\" without a library");
-    jc.A = valueOr(s, "A", jc.A);
-    jc.B = valueOr(s, "B", jc.B);
-    jc.n = valueOr(s, "n", jc.n);
-    jc.C = valueOr(s, "C", jc.C);
-    jc.m = valueOr(s, "m", jc.m);
-    jc.referenceStrainRate = valueOr(s, "reference_strain_rate", jc.referenceStrainRate);
-    jc.roomTemperature = valueOr(s, "room_temperature", jc.roomTemperature);
-    if (!(jc.referenceStrainRate > 0.0)) fail("strength.reference_strain_rate must be positive");
-  }
-  for (const char* key : {"yield_stress", "A", "B", "n", "C", "m"})
-    if (s.find(key) && (model.yield == YieldModel::Elastic || model.yield == YieldModel::Collins))
-      fail(std::string("strength.") + key + " does not apply to model \"" + s.model + "\"");
-  const char* collinsKeys[] = {"cohesion", "friction_intact", "strength_limit", "friction_damaged",
-                               "cohesion_damaged"};
-  if (model.yield == YieldModel::Collins) {
-    for (const char* key : collinsKeys)
-      if (!s.find(key) && std::string_view(key) != "cohesion_damaged")  // optional, default 0
-        fail(std::string("strength.") + key + " is required for model \"collins\"");
-    CollinsParameters& c = model.collins;
-    c.cohesion = valueOr(s, "cohesion", 0.0);
-    c.frictionIntact = valueOr(s, "friction_intact", 0.0);
-    c.strengthLimit = valueOr(s, "strength_limit", 0.0);
-    c.frictionDamaged = valueOr(s, "friction_damaged", 0.0);
-    c.cohesionDamaged = valueOr(s, "cohesion_damaged", 0.0);  // Collins et al. (2004): none
-    if (!(c.frictionIntact > 0.0)) fail("strength.friction_intact must be positive");
-    if (!(c.strengthLimit > c.cohesion))
-      fail("strength.strength_limit must exceed strength.cohesion (the Lundborg curve rises from "
-           "the cohesion to the limit)");
-  } else {
-    for (const char* key : collinsKeys)
-      if (s.find(key)) fail(std::string("strength.") + key + " applies only to model \"collins\"");
-  }
-  return model;
+  if (!spec.strength.present) return std::nullopt;
+  return buildStrength(spec.strength, strengthCatalog(), melt);
 }
 
 FractureModel makeFracture(const MaterialSpec& spec, bool hasStrength) {

@@ -1,5 +1,9 @@
 #include "sim/solid/model_keys.hpp"
 
+#include <utility>
+
+#include "sim/solid/strength_catalog.hpp"
+
 namespace ejecta {
 
 namespace {
@@ -8,11 +12,9 @@ using namespace config::keys;
 const Dimension kPa = Dimension::Pressure;
 const Dimension kKelvin = Dimension::Temperature;
 const Dimension kPerVolume{0, -3, 0, 0};
-const Dimension kPerTime{0, 0, -1, 0};
 const Dimension kSpecificHeat{0, 2, -2, -1};
 
-// Defaults are those sim/solid/materials.cpp applies (ThermalModel, JohnsonCookParameters,
-// FractureModel).
+// Defaults are those sim/solid/materials.cpp applies (ThermalModel, FractureModel).
 std::vector<std::string_view> modelNames(const std::vector<ModelKind>& models) {
   std::vector<std::string_view> out;
   for (const ModelKind& m : models) out.push_back(m.name);
@@ -37,40 +39,25 @@ const ModelFamily& thermalModelFamily() {
   return family;
 }
 
+// The strength models and their keys are the rows of sim/solid/strength_catalog.hpp.
 const ModelFamily& strengthModelFamily() {
   static const ModelFamily family = [] {
-    ModelFamily f{"strength",
-                  {{"elastic", "elastic shear stress, no yield", {"shear_modulus"}},
-                   {"von_mises", "perfectly plastic, yield stress Y", {"shear_modulus", "yield_stress"}},
-                   {"johnson_cook",
-                    "Johnson-Cook flow stress (A + B εpⁿ)(1 + C ln(ε̇/ε̇0))(1 − T*ᵐ)",
-                    {"shear_modulus", "A", "B", "n", "C", "m", "reference_strain_rate",
-                     "room_temperature"}},
-                   {"collins",
-                    "pressure-dependent rock, Collins et al. (2004): intact Lundborg curve, "
-                    "damaged Coulomb line",
-                    {"shear_modulus", "cohesion", "friction_intact", "strength_limit",
-                     "friction_damaged", "cohesion_damaged"}}},
-                  {}};
+    ModelFamily f{"strength", {}, {}};
+    const std::vector<StrengthModelRow>& rows = strengthCatalog();
+    for (const StrengthModelRow& r : rows) {
+      ModelKind kind{r.name, r.doc, {"shear_modulus"}};
+      for (const config::KeySpec& k : r.keys) kind.keys.push_back(k.name);
+      f.models.push_back(std::move(kind));
+    }
     f.keys = {
         choice("model", modelNames(f.models), "required", "the yield model (below)"),
         text("library", "—", "a published set of G, the Johnson-Cook constants and T_melt"),
         quantity("shear_modulus", kPa, "required without a library", "shear modulus G"),
-        quantity("yield_stress", kPa, "required for von_mises", "von Mises yield stress Y"),
-        quantity("A", kPa, "required without a library", "Johnson-Cook yield stress A"),
-        quantity("B", kPa, "required without a library", "Johnson-Cook hardening modulus B"),
-        number("n", "required without a library", "Johnson-Cook hardening exponent n"),
-        number("C", "required without a library", "Johnson-Cook strain-rate coefficient C"),
-        number("m", "required without a library", "Johnson-Cook thermal-softening exponent m"),
-        quantity("reference_strain_rate", kPerTime, "1", "Johnson-Cook ε̇0, > 0"),
-        quantity("room_temperature", kKelvin, "\"293 K\"", "Johnson-Cook T_room"),
-        quantity("cohesion", kPa, "required for collins", "intact cohesion Y_0"),
-        number("friction_intact", "required for collins", "intact friction coefficient μ_i, > 0"),
-        quantity("strength_limit", kPa, "required for collins", "strength limit Y_M, > Y_0"),
-        number("friction_damaged", "required for collins", "damaged friction coefficient μ_d"),
-        quantity("cohesion_damaged", kPa, "0",
-                 "damaged cohesion Y_d0: Y_d = Y_d0 + μ_d P (0, as in Collins et al.)"),
     };
+    // Each model's keys, in catalog order; a key two models share is listed once.
+    for (const StrengthModelRow& r : rows)
+      for (const config::KeySpec& k : r.keys)
+        if (!config::findKey(f.keys, k.name)) f.keys.push_back(k);
     return f;
   }();
   return family;

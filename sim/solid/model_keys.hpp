@@ -3,7 +3,8 @@
 // [materials.fracture]): each key's kind, dimension (SI), default and doc, and which model uses
 // which. The scene reader reads the tables by these specs (sim/setup/scene_materials.cpp),
 // sim/solid/materials.cpp applies the values, and the key reference in docs/scenes.md is
-// generated from them (`ejecta keys --markdown`).
+// generated from them (`ejecta keys --markdown`). The strength models and their keys are the
+// rows of sim/solid/strength_catalog.hpp.
 #include <string_view>
 #include <vector>
 

@@ -23,7 +23,7 @@
 #include "sim/solid/fracture.hpp"
 #include "sim/solid/material_spec.hpp"
 #include "sim/solid/model_keys.hpp"
-#include "sim/solid/strength.hpp"
+#include "sim/solid/strength_models/johnson_cook.hpp"
 #include "sim/solid/thermal.hpp"
 #include "sim/sph/sph_options.hpp"
 

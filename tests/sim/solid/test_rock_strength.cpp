@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -14,6 +15,8 @@
 #include "sim/run/simulation.hpp"
 #include "sim/solid/solid_state.hpp"
 #include "sim/solid/strength.hpp"
+#include "sim/solid/strength_models/collins.hpp"
+#include "sim/solid/strength_models/von_mises.hpp"
 #include "sim/state/tensor.hpp"
 #include "support/material_scene_error.hpp"
 
@@ -88,18 +91,13 @@ TEST(RockStrength, DamageBlendsTheTwoBranches) {
   EXPECT_NEAR(rockStrength(c, 100e6, 1.0), Yd, kRoundOff * Yi);
   EXPECT_NEAR(rockStrength(c, -20e6, 0.5), 25e6, kRoundOff * 50e6);  // half of 50 MPa in tension
   // Through StrengthModel: pressure and damage reach the Collins branch; melting zeroes it.
-  StrengthModel m;
-  m.yield = YieldModel::Collins;
-  m.shearModulus = 25e9;
-  m.collins = c;
+  const StrengthModel m(25e9, std::make_shared<CollinsYield>(c));
   EXPECT_NEAR(m.flowStress(0.0, 0.0, 300.0, 1500.0, 100e6, 0.5), 0.5 * (Yi + Yd), kRoundOff * Yi);
   EXPECT_EQ(m.flowStress(0.0, 0.0, 1500.0, 1500.0, 100e6, 0.0), 0.0);
   EXPECT_TRUE(m.yieldCarriesDamage());
   EXPECT_EQ(m.deviatoricDamageFactor(0.7), 1.0);
   // The other models keep scaling S by (1 - D), and ignore pressure and damage in flowStress.
-  StrengthModel vm;
-  vm.yield = YieldModel::VonMises;
-  vm.yieldStress = 1e8;
+  const StrengthModel vm(0.0, std::make_shared<VonMisesYield>(1e8));
   EXPECT_FALSE(vm.yieldCarriesDamage());
   EXPECT_EQ(vm.deviatoricDamageFactor(0.25), 0.75);
   EXPECT_EQ(vm.flowStress(0.0, 0.0, 300.0, 1500.0, 5e9, 1.0), 1e8);
@@ -119,11 +117,7 @@ MaterialTable collinsGranite() {
   Material m;
   m.name = "granite";
   m.thermal = ThermalModel{800.0, 293.0, 1500.0};
-  StrengthModel s;
-  s.yield = YieldModel::Collins;
-  s.shearModulus = 25e9;
-  s.collins = granite();
-  m.strength = s;
+  m.strength = StrengthModel(25e9, std::make_shared<CollinsYield>(granite()));
   return MaterialTable({m});
 }
 

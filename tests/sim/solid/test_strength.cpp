@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -16,6 +17,10 @@
 #include "sim/io/snapshot.hpp"
 #include "sim/solid/solid_state.hpp"
 #include "sim/solid/strength.hpp"
+#include "sim/solid/strength_library.hpp"
+#include "sim/solid/strength_models/elastic.hpp"
+#include "sim/solid/strength_models/johnson_cook.hpp"
+#include "sim/solid/strength_models/von_mises.hpp"
 #include "sim/state/tensor.hpp"
 #include "sim/solid/thermal.hpp"
 #include "support/material_scene_error.hpp"
@@ -95,10 +100,7 @@ TEST(Strength, RadialReturnScalesOntoTheYieldSurface) {
 TEST(Strength, JohnsonCookFlowStressByHand) {
   const StrengthLibraryEntry* al = findStrengthEntry("Al-2024-T351");
   ASSERT_NE(al, nullptr);
-  StrengthModel m;
-  m.yield = YieldModel::JohnsonCook;
-  m.shearModulus = al->shearModulus;
-  m.johnsonCook = al->johnsonCook;
+  StrengthModel m(al->shearModulus, std::make_shared<JohnsonCookYield>(al->johnsonCook));
   const double Tm = al->meltTemperature, Tr = al->johnsonCook.roomTemperature;
   // Quasi-static, room temperature, no plastic strain: A.
   EXPECT_DOUBLE_EQ(m.flowStress(0.0, 1.0, Tr, Tm), 265e6);
@@ -107,7 +109,7 @@ TEST(Strength, JohnsonCookFlowStressByHand) {
   EXPECT_NEAR(m.flowStress(0.1, 1e3, 0.5 * (Tr + Tm), Tm), expected, 1e-6 * expected);
   EXPECT_EQ(m.flowStress(0.1, 1e3, Tm, Tm), 0.0);  // melting drops strength to zero
   EXPECT_DOUBLE_EQ(m.flowStress(0.0, 1e-3, Tr, Tm), 265e6);  // slower than eps_dot_0: no softening
-  m.yield = YieldModel::Elastic;
+  m = StrengthModel(m.shearModulus, std::make_shared<ElasticYield>());
   EXPECT_TRUE(std::isinf(m.flowStress(1.0, 1.0, Tr, Tm)));
 }
 
@@ -151,11 +153,7 @@ MaterialTable gradyKippMaterial(double shearModulus, double yieldStress) {
   Material m;
   m.name = "basalt";
   m.thermal = ThermalModel{900.0, 293.0, 2000.0};
-  StrengthModel s;
-  s.yield = YieldModel::VonMises;
-  s.shearModulus = shearModulus;
-  s.yieldStress = yieldStress;
-  m.strength = s;
+  m.strength = StrengthModel(shearModulus, std::make_shared<VonMisesYield>(yieldStress));
   m.fracture.kind = FractureKind::GradyKipp;
   return MaterialTable({m});
 }
