@@ -103,9 +103,7 @@ Params assemble(const MaterialSpec& spec, const std::vector<Field<Params>>& fiel
 const std::vector<EosKind>& eosKinds() {
   static const std::vector<EosKind> kinds = {
       {"ideal_gas",
-       // Accepted here but not read by makeEquationOfState (it takes MaterialSpec::gamma).
-       {{"gamma", Dimension::None,
-         "accepted but not used: the adiabatic index is the material's own `gamma` key"}},
+       {},  // no parameters: the adiabatic index is the material's own `gamma` key
        {},
        "ideal gas, P = (γ − 1) ρ u"},
       {"tillotson",

@@ -99,6 +99,12 @@ void eosSection(std::ostream& os) {
   for (const EosKind& kind : eosKinds()) {
     os << "\n`eos = \"" << kind.name << "\"`: " << kind.doc << ".";
     if (!kind.libraryNames.empty()) os << " Library: " << joined(kind.libraryNames) << ".";
+    if (kind.parameters.empty()) {
+      os << " No parameters"
+         << (kind.name == "ideal_gas" ? " (its adiabatic index is the material's `gamma`)" : "")
+         << ".\n";
+      continue;
+    }
     os << "\n\n| parameter | type | meaning |\n|---|---|---|\n";
     for (const EosParameter& p : kind.parameters) {
       const std::string unit = siUnit(p.dimension);

@@ -507,6 +507,14 @@ TEST(SceneMaterials, BadMaterialsNameTheKey) {
   EXPECT_NE(error("library = \"granite\"\n", "").find("parameters.rho0: required"), std::string::npos);
   EXPECT_NE(error("eos = \"jwl\"", "eos = \"jwl\"\ngamma = 1.4").find("ideal_gas"),
             std::string::npos);
+  // An ideal gas takes its adiabatic index as the material's gamma; one written among the
+  // parameters was once accepted and ignored, and is now refused with where to put it.
+  const std::string gas = error("name = \"rock\"\neos = \"tillotson\"\nlibrary = \"granite\"",
+                                "name = \"rock\"\neos = \"ideal_gas\"\ngamma = 1.4");
+  EXPECT_NE(gas.find("materials[0].parameters.A"), std::string::npos) << gas;
+  EXPECT_NE(gas.find("takes no parameters: give the adiabatic index as the material's own gamma"),
+            std::string::npos)
+      << gas;
 }
 
 }  // namespace
