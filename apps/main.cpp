@@ -5,6 +5,7 @@
 #include <exception>
 
 #include "apps/commands.hpp"
+#include "apps/launch_check.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"ejecta: SPH hydrocode for impacts and explosions on asteroids"};
@@ -127,6 +128,10 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  }
+  if (const auto refusal = ejecta::app::multiRankRefusal()) {
+    if (ejecta::app::isFirstRank()) std::fprintf(stderr, "ejecta: error: %s\n", refusal->c_str());
+    return 2;
   }
   try {
     if (*runCmd) return ejecta::app::runCommand(run);

@@ -1,0 +1,40 @@
+#include "apps/launch_check.hpp"
+
+#include <cstdlib>
+
+namespace ejecta::app {
+
+namespace {
+
+std::optional<int> integerVariable(const char* name) {
+  const char* text = std::getenv(name);
+  if (!text || !*text) return std::nullopt;
+  char* end = nullptr;
+  const long value = std::strtol(text, &end, 10);
+  if (*end != '\0' || value < 0) return std::nullopt;
+  return static_cast<int>(value);
+}
+
+}  // namespace
+
+std::optional<int> launchedRanks() {
+  if (const auto n = integerVariable("OMPI_COMM_WORLD_SIZE")) return n;
+  return integerVariable("PMI_SIZE");
+}
+
+bool isFirstRank() {
+  const auto rank = integerVariable("OMPI_COMM_WORLD_RANK") ? integerVariable("OMPI_COMM_WORLD_RANK")
+                                                            : integerVariable("PMI_RANK");
+  return !rank || *rank == 0;
+}
+
+std::optional<std::string> multiRankRefusal() {
+  const std::optional<int> ranks = launchedRanks();
+  if (!ranks || *ranks <= 1) return std::nullopt;
+  return "launched as " + std::to_string(*ranks) +
+         " MPI ranks, but this ejecta runs on one rank (each rank would run the whole command "
+         "and write the same output files); run it without the MPI launcher, or with -np 1. "
+         "Each run is multi-threaded already (--threads).";
+}
+
+}  // namespace ejecta::app
