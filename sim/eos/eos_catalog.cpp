@@ -102,10 +102,8 @@ Params assemble(const MaterialSpec& spec, const std::vector<Field<Params>>& fiel
 
 const std::vector<EosKind>& eosKinds() {
   static const std::vector<EosKind> kinds = {
-      {"ideal_gas",
-       {},  // no parameters: the adiabatic index is the material's own `gamma` key
-       {},
-       "ideal gas, P = (γ − 1) ρ u"},
+      {"ideal_gas", {}, {}, "ideal gas, P = (γ − 1) ρ u",
+       "its adiabatic index is the material's own `gamma` key"},
       {"tillotson",
        [] {
          // Not an EOS constant but its tension cut-off (TillotsonOptions::minimumPressure).

@@ -25,6 +25,9 @@ struct EosKind {
   std::vector<EosParameter> parameters; // every key [materials.parameters] may hold
   std::vector<std::string> libraryNames;
   std::string_view doc;                 // one line: what it models, where it is documented
+  // An EOS without parameters: where its constants are given instead (read in the reader's
+  // error for a stray parameter and in the key reference).
+  std::string_view constantsElsewhere = {};
 };
 
 const std::vector<EosKind>& eosKinds();

@@ -100,9 +100,9 @@ void eosSection(std::ostream& os) {
     os << "\n`eos = \"" << kind.name << "\"`: " << kind.doc << ".";
     if (!kind.libraryNames.empty()) os << " Library: " << joined(kind.libraryNames) << ".";
     if (kind.parameters.empty()) {
-      os << " No parameters"
-         << (kind.name == "ideal_gas" ? " (its adiabatic index is the material's `gamma`)" : "")
-         << ".\n";
+      os << " No parameters";
+      if (!kind.constantsElsewhere.empty()) os << ": " << kind.constantsElsewhere;
+      os << ".\n";
       continue;
     }
     os << "\n\n| parameter | type | meaning |\n|---|---|---|\n";

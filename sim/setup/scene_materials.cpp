@@ -104,9 +104,9 @@ void readMaterials(const TableReader& root, Scene& scene) {
             known += (known.empty() ? "" : ", ") + std::string(p.key);
           if (known.empty())
             pr.fail(k.str(), "eos '" + m.eos + "' takes no parameters" +
-                                 (m.eos == "ideal_gas" ? std::string(": give the adiabatic index as "
-                                                                     "the material's own gamma key")
-                                                       : std::string()));
+                                 (kind.constantsElsewhere.empty()
+                                      ? std::string()
+                                      : ": " + std::string(kind.constantsElsewhere)));
           pr.fail(k.str(), "not a parameter of eos '" + m.eos + "'; its parameters: " + known);
         }
         m.parameters.emplace_back(std::string(k.str()),

@@ -512,7 +512,7 @@ TEST(SceneMaterials, BadMaterialsNameTheKey) {
   const std::string gas = error("name = \"rock\"\neos = \"tillotson\"\nlibrary = \"granite\"",
                                 "name = \"rock\"\neos = \"ideal_gas\"\ngamma = 1.4");
   EXPECT_NE(gas.find("materials[0].parameters.A"), std::string::npos) << gas;
-  EXPECT_NE(gas.find("takes no parameters: give the adiabatic index as the material's own gamma"),
+  EXPECT_NE(gas.find("takes no parameters: its adiabatic index is the material's own `gamma` key"),
             std::string::npos)
       << gas;
 }

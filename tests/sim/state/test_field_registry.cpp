@@ -14,6 +14,10 @@
 #include "sim/io/xdmf.hpp"
 #include "sim/run/physics_package.hpp"
 #include "sim/run/run.hpp"
+#include "sim/run/simulation.hpp"
+#include "sim/setup/bodies.hpp"
+#include "sim/setup/scene.hpp"
+#include "sim/solid/materials.hpp"
 #include "sim/sph/boundaries.hpp"
 #include "sim/state/builtin_fields.hpp"
 #include "sim/state/particle_fields.hpp"
@@ -231,4 +235,29 @@ TEST(FieldRegistry, GhostsCarryHaloFieldsThroughTheirMirrorParity) {
   p.column(*p.field("package_vector"), 0)[0] = -4.0;
   b.refreshGhosts(p);
   EXPECT_EQ(p.column(*p.field("package_vector"), 0)[g], 4.0);
+}
+
+// The health check watches every evolved field and its rate from the registry, a package's too:
+// a NaN in one particle's tracer (which no other particle's equations read, so it stays in that
+// particle) stops the next step, naming that particle. The particles are reordered at the step's
+// start, so the particle is found by its id.
+TEST(FieldRegistry, TheHealthCheckWatchesAPackagesEvolvedField) {
+  const Scene scene = parseScene(ejecta::test::periodicBlastScene(), "blast.toml");
+  const MaterialTable materials = MaterialTable::fromScene(scene);
+  Simulation sim(scene, buildParticles(scene, materials), materials, 1);
+  sim.addPackage(std::make_shared<PacedClock>());
+  sim.initialise();
+  sim.step(1.0);  // a healthy step first
+  ParticleSet& p = sim.particles();
+  const std::size_t k = p.numReal / 3;
+  const std::int64_t id = p.id[k];
+  p.column(*p.field("tracer"), 0)[k] = std::nan("");
+  try {
+    sim.step(1.0);
+    FAIL() << "a NaN in a package's field went unnoticed";
+  } catch (const SimulationError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("non-finite state"), std::string::npos) << message;
+    EXPECT_NE(message.find("particle id " + std::to_string(id) + " "), std::string::npos) << message;
+  }
 }
