@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "apps/commands.hpp"
+#include "sim/parallel/communicator.hpp"
 #include "coupling/run_images.hpp"
 #include "coupling/run_thermal.hpp"
 #include "fields/crater_summary.hpp"
@@ -129,6 +130,9 @@ int runCommand(const RunArgs& args) {
   RunOptions options;
   options.threads = args.threads;
   options.progress = !args.quiet && interactive();
+  // Under mpirun: every rank of MPI_COMM_WORLD (one rank otherwise); rank 0 prints.
+  options.ranks = worldCommunicator();
+  const bool root = options.ranks->isRoot();
   auto hooks = std::make_shared<HookResults>();
   options.configure = [charts = args.charts, hooks](const Scene& scene, RunOptions& o) {
     fields::addFieldOutputs(o, scene, [hooks](const fields::CraterSummary& c) { hooks->crater = c; });
@@ -140,7 +144,7 @@ int runCommand(const RunArgs& args) {
       throw std::runtime_error("--restart takes the scene and overrides stored in the run; "
                                "do not give a SCENE or --set with it");
     const RunOutcome r = restartRun(args.restartDir, options);
-    printSummary(r, *hooks, args.restartDir);
+    if (root) printSummary(r, *hooks, args.restartDir);
     return r.ok ? 0 : 2;
   }
   std::string source, path;
@@ -155,10 +159,16 @@ int runCommand(const RunArgs& args) {
   options.outDir = args.outDir.empty() ? (fs::path("runs") / scene.name).string() : args.outDir;
   options.sceneSource = source;
   options.overrides = args.overrides;
-  std::fprintf(stderr, "ejecta: running '%s' (%s) -> %s\n", scene.name.c_str(), path.c_str(),
-               options.outDir.c_str());
+  if (root) {
+    if (options.ranks->size() > 1)
+      std::fprintf(stderr, "ejecta: running '%s' (%s) on %d ranks -> %s\n", scene.name.c_str(),
+                   path.c_str(), options.ranks->size(), options.outDir.c_str());
+    else
+      std::fprintf(stderr, "ejecta: running '%s' (%s) -> %s\n", scene.name.c_str(), path.c_str(),
+                   options.outDir.c_str());
+  }
   const RunOutcome r = runScene(scene, options);
-  printSummary(r, *hooks, options.outDir);
+  if (root) printSummary(r, *hooks, options.outDir);
   return r.ok ? 0 : 2;
 }
 

@@ -2,6 +2,8 @@
 
 #include <cstdlib>
 
+#include "sim/parallel/communicator.hpp"
+
 namespace ejecta::app {
 
 namespace {
@@ -28,13 +30,19 @@ bool isFirstRank() {
   return !rank || *rank == 0;
 }
 
-std::optional<std::string> multiRankRefusal() {
+std::optional<std::string> multiRankRefusal(const std::string& subcommand) {
   const std::optional<int> ranks = launchedRanks();
   if (!ranks || *ranks <= 1) return std::nullopt;
-  return "launched as " + std::to_string(*ranks) +
-         " MPI ranks, but this ejecta runs on one rank (each rank would run the whole command "
-         "and write the same output files); run it without the MPI launcher, or with -np 1. "
-         "Each run is multi-threaded already (--threads).";
+  if (!builtWithMpi())
+    return "launched as " + std::to_string(*ranks) +
+           " MPI ranks, but this ejecta runs on one rank: it was built without MPI (install "
+           "libopenmpi-dev and rebuild; docs/parallel.md), and each rank would run the whole "
+           "command and write the same output files. Run it without the MPI launcher, or with "
+           "-np 1; each run is multi-threaded already (--threads).";
+  if (subcommand == "run") return std::nullopt;
+  return "launched as " + std::to_string(*ranks) + " MPI ranks, but 'ejecta " + subcommand +
+         "' runs on one rank (each rank would run the whole command and write the same output "
+         "files); only 'ejecta run' is distributed. Run it without the MPI launcher, or with -np 1.";
 }
 
 }  // namespace ejecta::app

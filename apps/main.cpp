@@ -3,9 +3,11 @@
 
 #include <cstdio>
 #include <exception>
+#include <optional>
 
 #include "apps/commands.hpp"
 #include "apps/launch_check.hpp"
+#include "sim/parallel/communicator.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"ejecta: SPH hydrocode for impacts and explosions on asteroids"};
@@ -129,10 +131,15 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
-  if (const auto refusal = ejecta::app::multiRankRefusal()) {
+  const std::string subcommand = app.get_subcommands().front()->get_name();
+  if (const auto refusal = ejecta::app::multiRankRefusal(subcommand)) {
     if (ejecta::app::isFirstRank()) std::fprintf(stderr, "ejecta: error: %s\n", refusal->c_str());
     return 2;
   }
+  // MPI starts only under a launcher: a plain `ejecta run` needs no MPI runtime.
+  std::optional<ejecta::MpiSession> mpi;
+  if (ejecta::app::launchedRanks()) mpi.emplace(&argc, &argv);
+  const bool distributed = ejecta::app::launchedRanks().value_or(1) > 1;
   try {
     if (*runCmd) return ejecta::app::runCommand(run);
     if (*verifyCmd) return ejecta::app::verifyCommand(verify);
@@ -147,6 +154,8 @@ int main(int argc, char** argv) {
     if (*keysCmd) return ejecta::app::keysCommand(keysArgs);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ejecta: error: %s\n", e.what());
+    // The other ranks may be waiting in a collective for this one: end them all.
+    if (distributed) ejecta::MpiSession::abortAll(1);
     return 1;
   }
   return 1;

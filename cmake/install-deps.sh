@@ -7,6 +7,7 @@ packages=(
   libhdf5-dev nlohmann-json3-dev libtomlplusplus-dev libcli11-dev libgtest-dev libbenchmark-dev
   libeigen3-dev libtbb-dev libopenvdb-dev libboost-iostreams-dev libopenvdb-tools
   libembree-dev libosmesa6-dev libpng-dev hdf5-tools
+  libopenmpi-dev openmpi-bin
   python3-matplotlib python3-numpy
 )
 missing=()

@@ -151,7 +151,7 @@ void addImageOutputs(RunOptions& options, const Scene& scene, bool charts) {
         o.cut = im.cut;
         o.cutAt = im.cutAt.value_or(0.0);
         if (im.camera) o.camera = renderCamera(*im.camera);
-        writeParticleImage(**renderer, sim.particles(), geometry, info.time, name, o,
+        writeParticleImage(**renderer, sim.outputParticles(), geometry, info.time, name, o,
                            render::framePath(dir, field, static_cast<int>(info.snapshotIndex)));
       }
       if (gridFrames && (final || info.snapshotIndex % fieldsEvery == 0))

@@ -185,7 +185,7 @@ void finishPass(const PassContext& c, PassLog& log, Pass pass,
   if (log.pictures) {
     try {
       if (!log.renderer) log.renderer = std::make_unique<render::Renderer>();
-      writeThermalPicture(*log.renderer, sim.particles(), c.geometry, sim.time(), *c.study, pass.result,
+      writeThermalPicture(*log.renderer, sim.outputParticles(), c.geometry, sim.time(), *c.study, pass.result,
                           c.sceneName + ": hot material and the spacecraft's faces",
                           c.outDir / pass.dir / "crater.png", poseTime);
     } catch (const std::exception& e) {
@@ -214,7 +214,7 @@ void snapshotPass(const PassContext& c, PassLog& log, const Simulation& sim, con
   pass.dir = dirName;
   try {
     const auto emitters = std::make_shared<const radiation::Emitters>(
-        emittersFromParticles(sim.particles(), c.geometry, c.emitterOptions, &pass.stats));
+        emittersFromParticles(sim.outputParticles(), c.geometry, c.emitterOptions, &pass.stats));
     const radiation::TriangleMesh* occluder = gridsNow ? log.surface.current(c.occluderOptions) : nullptr;
     pass.occluderTriangles = occluder ? occluder->triangleCount() : 0;
     const std::vector<radiation::PassFrame> frames(c.study->approach.times().size(),
@@ -242,7 +242,7 @@ void advanceEvolvingPasses(const PassContext& c, PassLog& log, const Simulation&
              sim.time() >= (open.start + samples[open.emitters.size()]) * (1.0 - 1e-12)) {
         // Every sample time this step reaches, of every open pass, shares its material.
         if (!now) now = std::make_shared<const radiation::Emitters>(
-                      emittersFromParticles(sim.particles(), c.geometry, c.emitterOptions, &nowStats));
+                      emittersFromParticles(sim.outputParticles(), c.geometry, c.emitterOptions, &nowStats));
         if (nowStats.emitters >= open.largest.emitters) open.largest = nowStats;
         const radiation::TriangleMesh* occluder = log.surface.current(c.occluderOptions);
         open.emitters.push_back(now);
@@ -339,6 +339,15 @@ void addThermalOutputs(RunOptions& options, const Scene& scene, bool charts,
 
   auto log = std::make_shared<PassLog>();
   const ThermalOutputOptions wanted = scene.thermal;
+  // Evolving passes sample the material every step, which a distributed run holds in pieces
+  // (its outputs gather it only at output times).
+  if (wanted.evolving && options.ranks && options.ranks->size() > 1)
+    throw SceneError(scene.sourcePath + ":" + std::to_string(scene.thermal.line) +
+                     ": table 'thermal': key 'hot_material': \"evolving\" samples the material "
+                     "every step and runs on one rank; this run has " +
+                     std::to_string(options.ranks->size()) +
+                     " (use \"snapshot\", passes at output times, which a distributed run "
+                     "supports)");
 
   auto previous = options.onOutput;
   options.onOutput = [=](const Simulation& sim, const SnapshotInfo& info, bool final) {

@@ -40,7 +40,7 @@ void addFieldOutputs(RunOptions& options, const Scene& scene,
     options.onOutput = [=](const Simulation& sim, const SnapshotInfo& info, bool final) {
       if (previous) previous(sim, info, final);
       if (!final && info.snapshotIndex % every != 0) return;
-      const GridSet set = buildGridSet(sim.particles(), ctx, request);
+      const GridSet set = buildGridSet(sim.outputParticles(), ctx, request);
       GridFileMeta meta;
       meta.scene = sceneName;
       meta.time = info.time;
@@ -67,7 +67,7 @@ void addFieldOutputs(RunOptions& options, const Scene& scene,
       if (previousOutput) previousOutput(sim, info, final);
       CraterMetrics m;
       try {
-        m = measureCrater(sim.particles(), ctx, *crater, resolution);
+        m = measureCrater(sim.outputParticles(), ctx, *crater, resolution);
       } catch (const std::exception& e) {
         // A row that says "not found" (found = 0); the run goes on.
         m = CraterMetrics{};
@@ -83,7 +83,7 @@ void addFieldOutputs(RunOptions& options, const Scene& scene,
       try {
         const CraterMetrics m = tracking->last && tracking->lastTime == sim.time()
                                     ? *tracking->last
-                                    : measureCrater(sim.particles(), ctx, *crater, resolution);
+                                    : measureCrater(sim.outputParticles(), ctx, *crater, resolution);
         const CraterSummary c = craterSummary(m, crater->planar);
         addToSummary(c, summary);
         writeFileAtomically(fs::path(outDir) / "crater_profile.csv", craterProfileCsv(m));

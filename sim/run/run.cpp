@@ -102,11 +102,13 @@ std::string formatDuration(double seconds) {
 // Output state of one run directory.
 class RunOutputs {
  public:
-  explicit RunOutputs(const RunOptions& o) : options_(o) {
-    if (o.outDir.empty()) return;
+  // Every rank keeps the logs' state (their sums are collectives); rank 0 alone writes.
+  RunOutputs(const RunOptions& o, bool writer) : options_(o), writer_(writer) {
+    if (!enabled()) return;
     fs::create_directories(fs::path(o.outDir) / "snapshots");
   }
-  bool enabled() const { return !options_.outDir.empty(); }
+  bool enabled() const { return writer_ && !options_.outDir.empty(); }
+  bool logging() const { return !options_.outDir.empty(); }
 
   // A restart resumes from a snapshot that the log has usually run past: keep the header and
   // the rows up to `step`, so the resumed steps are not listed twice.
@@ -129,12 +131,15 @@ class RunOutputs {
   // Scenes with several materials get the ledger's columns: <material>_kinetic_J and
   // <material>_internal_J for each, after the totals.
   void openEnergyLog(bool append, const Scene& scene) {
-    if (!enabled()) return;
+    if (!logging()) return;
     materials_ = scene.materials.size() > 1 ? scene.materials.size() : 0;
     // The target's gain as a share of the yield (a source) or of the impactor's kinetic energy.
     const LedgerGroups g = ledgerGroups(scene);
     coupling_ = materials_ > 0 && !g.target.empty() &&
                 (!g.impactor.empty() || !scene.detonations.empty() || !scene.deposits.empty());
+    gauged_ = !scene.gauges.empty();
+    for (const GaugeSpec& gauge : scene.gauges) gaugePoints_.push_back(gauge.position);
+    if (!enabled()) return;
     const fs::path path = fs::path(options_.outDir) / "energy.csv";
     energy_.open(path, append ? std::ios::app : std::ios::trunc);
     if (!append) {
@@ -154,36 +159,42 @@ class RunOutputs {
       gauges_.precision(12);
     }
   }
-  void logGauges(const Simulation& sim) {
+  void logGauges(Simulation& sim) {
+    if (!gauged_) return;
+    // The particles within reach of a gauge, from every rank (one rank: all of its own).
+    const ParticleSet& near = sim.particlesNear(gaugePoints_);
     if (!gauges_.is_open()) return;
     gauges_ << sim.stepCount() << ',' << sim.time()
-            << gaugeRow(gaugeLayout(sim.scene()), readGauges(gaugeLayout(sim.scene()), sim.particles())) << '\n';
+            << gaugeRow(gaugeLayout(sim.scene()), readGauges(gaugeLayout(sim.scene()), near)) << '\n';
   }
   void logEnergy(const Simulation& sim, double e0) {
-    if (!energy_.is_open()) return;
+    if (!logging()) return;
     const ConservedTotals t = sim.totals();
+    const std::vector<ConservedTotals> byMaterial =
+        materials_ > 0 ? sim.totalsByMaterial() : std::vector<ConservedTotals>{};
+    if (!energy_.is_open()) return;
     // A delayed deposit is a source, not an error: the expected total includes what it added.
     const double expected = e0 + sim.delayedEnergyAdded();
     energy_ << sim.stepCount() << ',' << sim.time() << ',' << sim.lastDt() << ',' << t.kinetic
             << ',' << t.internal << ',' << t.total() << ',' << (t.total() - expected) / std::abs(expected)
             << ',' << t.momentum[0] << ',' << t.momentum[1] << ',' << t.momentum[2];
     if (materials_ > 0) {
-      const std::vector<ConservedTotals> byMaterial = conservedTotalsByMaterial(sim.particles(), materials_);
       for (const ConservedTotals& m : byMaterial) energy_ << ',' << m.kinetic << ',' << m.internal;
       if (coupling_) energy_ << ',' << couplingShare(reference_, byMaterial);
     }
     energy_ << '\n';
   }
+  // Writes sim.outputParticles() (collected beforehand).
   void writeSnapshot(const Simulation& sim, SnapshotInfo info) {
     if (!enabled()) return;
     energy_.flush();
     gauges_.flush();
     const std::string name = snapshotName(info.snapshotIndex);
     info.sceneSource = sourceWithOverrides(options_, sim.depositFirings());
-    ejecta::writeSnapshot((fs::path(options_.outDir) / "snapshots" / name).string(),
-                          sim.particles(), info);
-    xdmf_.push_back({"snapshots/" + name, info.time, sim.particles().numReal, info.geometry,
-                     xdmfAttributes(sim.particles())});
+    const ParticleSet& all = sim.outputParticles();
+    ejecta::writeSnapshot((fs::path(options_.outDir) / "snapshots" / name).string(), all, info);
+    xdmf_.push_back({"snapshots/" + name, info.time, all.numReal, info.geometry,
+                     xdmfAttributes(all)});
     writeXdmfSeries((fs::path(options_.outDir) / "snapshots.xdmf").string(), xdmf_);
   }
   void setSeries(std::vector<XdmfEntry> entries) { xdmf_ = std::move(entries); }
@@ -198,6 +209,9 @@ class RunOutputs {
 
  private:
   const RunOptions& options_;
+  bool writer_ = true;
+  bool gauged_ = false;
+  std::vector<std::array<double, 3>> gaugePoints_;
   std::ofstream energy_;
   std::ofstream gauges_;
   std::size_t materials_ = 0;  // ledger columns in energy.csv (0: one material, totals only)
@@ -254,7 +268,8 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
     return wallBefore +
            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
-  ProgressLine progress(options.progress);
+  const bool root = sim.ranks().isRoot();
+  ProgressLine progress(options.progress && root);
   RunOutcome outcome;
   bool lastWritten = atSnapshot;
   auto snapshot = [&](bool final) {
@@ -262,8 +277,9 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
     info.step = sim.stepCount();
     info.dtNext = sim.dtNext();
     info.wallSeconds = wall();
+    if (snapshots || options.onOutput) sim.collectParticles();
     if (snapshots) outputs.writeSnapshot(sim, info);
-    if (options.onOutput) options.onOutput(sim, info, final);
+    if (options.onOutput && root) options.onOutput(sim, info, final);
     ++info.snapshotIndex;
   };
   if (!fresh)
@@ -280,8 +296,7 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
       info.initialMomentum = t0.momentum;
       info.initialMaterialKinetic.clear();
       info.initialMaterialInternal.clear();
-      for (const ConservedTotals& m :
-           conservedTotalsByMaterial(sim.particles(), scene.materials.size())) {
+      for (const ConservedTotals& m : sim.totalsByMaterial()) {
         info.initialMaterialKinetic.push_back(m.kinetic);
         info.initialMaterialInternal.push_back(m.internal);
       }
@@ -334,7 +349,7 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
   const ConservedTotals t = sim.totals();
   RunSummary& s = outcome.summary;
   s.scene = scene.name;
-  s.particles = sim.particles().numReal;
+  s.particles = sim.totalParticles();
   s.steps = sim.stepCount();
   s.tEnd = sim.time();
   s.wallSeconds = wall();
@@ -350,17 +365,18 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
   s.extras.push_back({"geometry", std::string(geometryName(scene.geometry))});
   s.extras.push_back({"kernel", std::string(kernelName(scene.sph.kernel))});
   s.extras.push_back({"mean_neighbours", sim.meanNeighbours()});
+  if (sim.ranks().size() > 1) s.extras.push_back({"ranks", static_cast<double>(sim.ranks().size())});
   s.extras.push_back({"particle_updates_per_second",
                       s.wallSeconds > 0 ? static_cast<double>(s.particles) *
                                               static_cast<double>(s.steps) / s.wallSeconds
                                         : 0.0});
   outcome.ledger = ledgerSummary(scene, info.initialMaterialKinetic, info.initialMaterialInternal,
-                                 conservedTotalsByMaterial(sim.particles(), scene.materials.size()),
+                                 sim.totalsByMaterial(),
                                  sim.depositFirings());
   addToSummary(outcome.ledger, s);
   outcome.gauges = outputs.gaugePulses();
   addToSummary(outcome.gauges, s);
-  if (options.onFinish) options.onFinish(sim, s);
+  if (options.onFinish && root) options.onFinish(sim, s);
   if (outputs.enabled())
     writeSummaryJson((fs::path(options.outDir) / "summary.json").string(), s);
   return outcome;
@@ -369,7 +385,7 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
 }  // namespace
 
 RunOutcome runSimulation(Simulation& sim, const RunOptions& options) {
-  RunOutputs outputs(options);
+  RunOutputs outputs(options, sim.ranks().isRoot());
   SnapshotInfo info;
   info.geometry = sim.scene().geometry;
   info.scene = sim.scene().name;
@@ -385,7 +401,7 @@ RunOutcome runScene(const Scene& scene, const RunOptions& baseOptions) {
   const int threads = resolveThreads(options.threads);
   MaterialTable materials = MaterialTable::fromScene(scene);
   ParticleSet particles = buildParticles(scene, materials);
-  Simulation sim(scene, std::move(particles), std::move(materials), threads);
+  Simulation sim(scene, std::move(particles), std::move(materials), threads, options.ranks);
   for (const auto& package : options.packages) sim.addPackage(package);
   return runSimulation(sim, options);
 }
@@ -424,7 +440,8 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
   Scene scene = parseScene(options.sceneSource, files.back().string() + " (stored scene)", overrides);
   if (options.configure) options.configure(scene, options);
 
-  RunOutputs outputs(options);
+  const bool root = !options.ranks || options.ranks->isRoot();
+  RunOutputs outputs(options, root);
   std::vector<XdmfEntry> series;
   // The packages' declarations say which of their fields the XDMF lists (a snapshot stores the
   // values, not the declaration).
@@ -452,7 +469,7 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
     return false;
   }();
   const ParticleSet initial = needsFlaws ? buildParticles(scene, materials) : ParticleSet{};
-  Simulation sim(scene, std::move(particles), std::move(materials), threads);
+  Simulation sim(scene, std::move(particles), std::move(materials), threads, options.ranks);
   for (const auto& package : options.packages) sim.addPackage(package);
   if (needsFlaws) sim.distributeFlaws(initial);
   sim.resume(info.time, info.step, info.dtNext);

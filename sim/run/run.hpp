@@ -37,6 +37,11 @@ struct RunOptions {
   // simulation of a new run and of a restart alike (so a package shared by both must keep no
   // state between steps).
   std::vector<std::shared_ptr<PhysicsPackage>> packages;
+  // The ranks of a distributed run (sim/parallel/communicator.hpp; nullptr: one rank). Every
+  // rank calls runScene or restartRun alike; rank 0 writes the files and calls the hooks
+  // observer on each rank with its own particles, onOutput and onFinish on rank 0 with every
+  // rank's (Simulation::outputParticles()).
+  std::shared_ptr<const Communicator> ranks;
 };
 
 struct RunOutcome {

@@ -75,18 +75,14 @@ std::size_t firstNonFiniteIndex(const double* x, std::size_t n) {
 }  // namespace
 
 Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materials,
-                       int numThreads)
+                       int numThreads, std::shared_ptr<const Communicator> ranks)
     : scene_(std::move(scene)),
+      domain_(std::move(ranks), spatialDimension(scene_.geometry)),
       p_(std::move(particles)),
       materials_(std::move(materials)),
       boundaries_(scene_.geometry, scene_.domain),
       ws_(scene_.sph, scene_.geometry) {
   if (p_.numReal == 0) throw SimulationError("scene '" + scene_.name + "' has no particles");
-  // Below ~500 particles per thread the fork/join cost of a pass exceeds its work (a 450-particle
-  // tube runs faster on one thread); results do not depend on the thread count either way.
-  ws_.numThreads = std::clamp(static_cast<int>(p_.numReal / kParticlesPerThread), 1,
-                              std::max(numThreads, 1));
-  omp_set_num_threads(ws_.numThreads);
   // A particle with 30x the neighbours its kernel should hold (the volume of the support in
   // particle volumes: 2 kappa eta, pi (kappa eta)^2, 4/3 pi (kappa eta)^3) has an h that stopped
   // tracking its density (the seed's dh/dt or constant h in a strong expansion); its pair loop
@@ -147,6 +143,17 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
   // leapfrog advances them only when the scene integrates them.
   if (scene_.sph.density != DensityMethod::Continuity) leapfrog_.hold("density");
   if (scene_.sph.smoothingLength != SmoothingLengthMethod::Seed) leapfrog_.hold("smoothing_length");
+  // A distributed run: the flaws are drawn from the whole body (each rank keeps the table, found
+  // by particle id, so flaws travel with their particle), then each rank keeps its share.
+  if (domain_.distributed()) {
+    if (fracture_) fracture_->distributeFlaws(p_, materials_);
+    domain_.keepShare(p_);
+  }
+  // Below ~500 particles per thread the fork/join cost of a pass exceeds its work (a 450-particle
+  // tube runs faster on one thread); results do not depend on the thread count either way.
+  ws_.numThreads = std::clamp(static_cast<int>(p_.numReal / kParticlesPerThread), 1,
+                              std::max(numThreads, 1));
+  omp_set_num_threads(ws_.numThreads);
 }
 
 void Simulation::addPackage(std::shared_ptr<PhysicsPackage> package) {
@@ -179,13 +186,73 @@ void Simulation::resume(double time, long step, double dtNext) {
 }
 
 double Simulation::meanNeighbours() const {
-  if (ws_.neighbourCount.empty()) return 0.0;
-  const double sum = std::accumulate(ws_.neighbourCount.begin(), ws_.neighbourCount.end(), 0.0);
-  return sum / static_cast<double>(ws_.neighbourCount.size());
+  std::array<double, 2> sums{
+      std::accumulate(ws_.neighbourCount.begin(), ws_.neighbourCount.end(), 0.0),
+      static_cast<double>(ws_.neighbourCount.size())};
+  domain_.comm().sumInRankOrder(sums);
+  return sums[1] > 0.0 ? sums[0] / sums[1] : 0.0;
+}
+
+namespace {
+
+void addTotals(const ConservedTotals& t, std::vector<double>& out) {
+  out.insert(out.end(), {t.kinetic, t.internal, t.momentum[0], t.momentum[1], t.momentum[2], t.mass});
+}
+
+ConservedTotals totalsAt(const std::vector<double>& in, std::size_t k) {
+  ConservedTotals t;
+  t.kinetic = in[6 * k];
+  t.internal = in[6 * k + 1];
+  t.momentum = {in[6 * k + 2], in[6 * k + 3], in[6 * k + 4]};
+  t.mass = in[6 * k + 5];
+  return t;
+}
+
+}  // namespace
+
+ConservedTotals Simulation::totals() const {
+  const ConservedTotals mine = conservedTotals(p_);
+  if (!domain_.distributed()) return mine;
+  std::vector<double> sums;
+  addTotals(mine, sums);
+  domain_.comm().sumInRankOrder(sums);
+  return totalsAt(sums, 0);
+}
+
+std::vector<ConservedTotals> Simulation::totalsByMaterial() const {
+  std::vector<ConservedTotals> mine = conservedTotalsByMaterial(p_, materials_.size());
+  if (!domain_.distributed()) return mine;
+  std::vector<double> sums;
+  for (const ConservedTotals& t : mine) addTotals(t, sums);
+  domain_.comm().sumInRankOrder(sums);
+  for (std::size_t m = 0; m < mine.size(); ++m) mine[m] = totalsAt(sums, m);
+  return mine;
+}
+
+void Simulation::collectParticles() {
+  if (domain_.distributed()) collected_ = domain_.gatherToRoot(p_);
+}
+
+const ParticleSet& Simulation::particlesNear(std::span<const std::array<double, 3>> points) {
+  if (!domain_.distributed()) return p_;
+  collected_ = domain_.gatherNear(p_, points, kKernelSupport);
+  return collected_;
+}
+
+std::vector<std::uint64_t> Simulation::particleCosts() const {
+  // A particle's work is its pair loop: its neighbours, twice over for a solid (the stress
+  // divergence and the velocity gradient double the work per pair).
+  std::vector<std::uint64_t> cost(p_.numReal, 1);
+  for (std::size_t i = 0; i < p_.numReal && i < ws_.neighbourCount.size(); ++i) {
+    const bool solid = materials_[static_cast<std::size_t>(p_.material[i])].strength.has_value();
+    cost[i] = (1 + ws_.neighbourCount[i]) * (solid ? 2u : 1u);
+  }
+  return cost;
 }
 
 void Simulation::sortForLocality() {
   p_.clearGhosts();
+  if (p_.numReal == 0) return;
   double hMean = 0.0;
   for (std::size_t i = 0; i < p_.numReal; ++i) hMean += p_.h[i];
   hMean /= std::max<std::size_t>(p_.numReal, 1);
@@ -201,7 +268,8 @@ void Simulation::sortForLocality() {
 
 void Simulation::evaluateEquationOfState() {
   materialMembers_.assign(materials_.size(), {});
-  for (std::size_t i = 0; i < p_.numReal; ++i) materialMembers_[p_.material[i]].push_back(i);
+  for (std::size_t i = 0; i < p_.numReal; ++i)
+    materialMembers_[static_cast<std::size_t>(p_.material[i])].push_back(i);
   for (std::size_t m = 0; m < materials_.size(); ++m) {
     const std::vector<std::size_t>& members = materialMembers_[m];
     materials_[m].eos->evaluate(p_.rho.data(), p_.u.data(), p_.P.data(), p_.cs.data(),
@@ -214,35 +282,58 @@ void Simulation::evaluateEquationOfState() {
 
 void Simulation::evaluateDerivatives() {
   const int dim = ws_.dim;
+  const bool distributed = domain_.distributed();
+  const Communicator& ranks = domain_.comm();
   double margin = kGhostMargin;
   for (int attempt = 0;; ++attempt) {
-    boundaries_.makeGhosts(p_, kKernelSupport * margin);
+    boundaries_.makeGhosts(p_, kKernelSupport * margin, distributed ? &ranks : nullptr);
+    // Other ranks' particles (and their images) within reach of this rank's.
+    if (distributed) domain_.halos().build(p_, dim, kKernelSupport * margin, ranks);
     // Cells about one (typical) kernel support across.
     std::vector<double> hs(p_.h.begin(), p_.h.begin() + static_cast<std::ptrdiff_t>(p_.numReal));
+    if (hs.empty()) hs.assign(1, p_.size() > 0 ? p_.h[0] : 1.0);  // a rank left without particles
     std::nth_element(hs.begin(), hs.begin() + static_cast<std::ptrdiff_t>(hs.size() / 2), hs.end());
     ws_.grid.build(p_, dim, kKernelSupport * hs[hs.size() / 2]);
     ws_.lists.reset(p_.size(), std::max(ws_.numThreads, omp_get_max_threads()));
     std::vector<double> hBefore(p_.h.begin(), p_.h.begin() + static_cast<std::ptrdiff_t>(p_.numReal));
-    if (const std::optional<std::size_t> bad = runDensityPass(p_, ws_))
-      failAt(*bad, "no positive density from the density pass (an isolated particle, or the "
-                   "continuity density of a particle driven to zero)");
-    if (boundaries_.layersCover(p_, kKernelSupport)) break;
+    const std::optional<std::size_t> bad = runDensityPass(p_, ws_);
+    stopIfAnyRankFailed(bad ? failureMessage(*bad, "no positive density from the density pass (an "
+                                                   "isolated particle, or the continuity density "
+                                                   "of a particle driven to zero)")
+                            : std::string());
+    bool covered = boundaries_.layersCover(p_, kKernelSupport);
+    // The halos were chosen for supports up to margin x the h they started the pass with.
+    if (distributed) {
+      for (std::size_t i = 0; i < p_.numReal && covered; ++i)
+        covered = p_.h[i] <= margin * hBefore[i];
+      covered = ranks.allTrue(covered);
+    }
+    if (covered) break;
     if (attempt == 3)
-      failAt(0, "smoothing lengths near a boundary grew past four successively wider ghost "
-                "layers in one step");
+      stopIfAnyRankFailed(failureMessage(0, "smoothing lengths near a boundary (or a rank's "
+                                            "halo) grew past four successively wider layers "
+                                            "in one step"));
     // h grew past the ghost layer: rebuild from the starting h with a wider layer.
     std::copy(hBefore.begin(), hBefore.end(), p_.h.begin());
     margin *= 1.5;
   }
   evaluateEquationOfState();
+  // Ghosts first (their sources are here), then the halos (which include other ranks' ghosts).
   boundaries_.refreshGhosts(p_);
-  if (scene_.sph.viscosityReconstruction != ViscosityReconstruction::None)
+  if (distributed) domain_.halos().refresh(p_, ranks);
+  if (scene_.sph.viscosityReconstruction != ViscosityReconstruction::None) {
     boundaries_.refreshGhostTensor(p_, ws_.velocityGradient);
+    if (distributed) domain_.halos().refreshArray(ws_.velocityGradient, 9, ranks);
+  }
   if (ws_.geometry == Geometry::Axisymmetric) {
-    for (std::size_t g = p_.numReal; g < p_.size(); ++g) {
+    for (std::size_t g = p_.numReal; g < p_.numReal + boundaries_.numBoundaryGhosts(); ++g) {
       const std::size_t s = p_.ghostSource[g - p_.numReal];
       ws_.smoothedR[g] = ws_.smoothedR[s];
       ws_.dSmoothedR[g] = ws_.dSmoothedR[s];
+    }
+    if (distributed) {
+      domain_.halos().refreshArray(ws_.smoothedR, 1, ranks);
+      domain_.halos().refreshArray(ws_.dSmoothedR, 1, ranks);
     }
   }
   switch (dim) {
@@ -277,17 +368,27 @@ void Simulation::computeNextTimestep() {
   double dt = std::min(dtCourant, dtForce);
   const PackageContext context = packageContext();
   for (const auto& package : packages_) dt = std::min(dt, package->timestep(p_, context));
+  if (domain_.distributed()) dt = domain_.comm().minimum(dt);
   if (scene_.time.dtMax > 0.0 && dt > scene_.time.dtMax) dt = scene_.time.dtMax;
   if (dt == std::numeric_limits<double>::max()) dt = scene_.time.dtMax > 0 ? scene_.time.dtMax
                                                                          : scene_.time.tEnd;
   dtNext_ = dt;
 }
 
-void Simulation::failAt(std::size_t i, const std::string& reason) const {
+std::string Simulation::failureMessage(std::size_t i, const std::string& reason) const {
   std::ostringstream s;
-  s << "step " << step_ << ", t = " << time_ << " s: " << reason << ": "
-    << describeParticle(p_, i);
-  throw SimulationError(s.str());
+  s << "step " << step_ << ", t = " << time_ << " s: " << reason;
+  if (i < p_.size()) s << ": " << describeParticle(p_, i);
+  return s.str();
+}
+
+void Simulation::failAt(std::size_t i, const std::string& reason) const {
+  throw SimulationError(failureMessage(i, reason));
+}
+
+void Simulation::stopIfAnyRankFailed(const std::string& local) const {
+  const std::string message = domain_.comm().firstMessage(local);
+  if (!message.empty()) throw SimulationError(message);
 }
 
 void Simulation::checkHealth(double dt) const {
@@ -297,29 +398,45 @@ void Simulation::checkHealth(double dt) const {
   std::size_t firstNonFinite = p_.numReal;
   for (const double* column : watched)
     firstNonFinite = std::min(firstNonFinite, firstNonFiniteIndex(column, p_.numReal));
-  for (std::size_t i = 0; i < p_.numReal; ++i) {
-    if (i == firstNonFinite) failAt(i, "non-finite state (NaN or infinity)");
-    if (!(p_.rho[i] > 0.0)) failAt(i, "non-positive density");
-    if (p_.u[i] < 0.0 && materials_[static_cast<std::size_t>(p_.material[i])].eos->requiresPositiveEnergy())
-      failAt(i, "negative specific internal energy");
-    if (!(p_.omega[i] > 0.0)) failAt(i, "non-positive grad-h factor omega (h no longer solvable)");
-    if (p_.h[i] < hMin_)
-      failAt(i, "smoothing length collapsed below sph.h_min_factor x eta x the smallest body spacing");
-    if (i < ws_.neighbourCount.size() && ws_.neighbourCount[i] > maxNeighbours_)
-      failAt(i, "smoothing length grew until the particle has " +
-                    std::to_string(ws_.neighbourCount[i]) + " neighbours (limit " +
-                    std::to_string(maxNeighbours_) +
-                    "); h no longer follows the density (the seed's dh/dt or constant h in a "
-                    "strong expansion, or a particle rarefied at a contact under continuity "
-                    "density): use sph.smoothing_length = \"neighbours\" with summation density");
-  }
+  // This rank's first problem; every rank then stops with the lowest rank's.
+  auto problem = [&]() -> std::string {
+    for (std::size_t i = 0; i < p_.numReal; ++i) {
+      if (i == firstNonFinite) return failureMessage(i, "non-finite state (NaN or infinity)");
+      if (!(p_.rho[i] > 0.0)) return failureMessage(i, "non-positive density");
+      if (p_.u[i] < 0.0 &&
+          materials_[static_cast<std::size_t>(p_.material[i])].eos->requiresPositiveEnergy())
+        return failureMessage(i, "negative specific internal energy");
+      if (!(p_.omega[i] > 0.0))
+        return failureMessage(i, "non-positive grad-h factor omega (h no longer solvable)");
+      if (p_.h[i] < hMin_)
+        return failureMessage(i, "smoothing length collapsed below sph.h_min_factor x eta x the "
+                                 "smallest body spacing");
+      if (i < ws_.neighbourCount.size() && ws_.neighbourCount[i] > maxNeighbours_)
+        return failureMessage(
+            i, "smoothing length grew until the particle has " +
+                   std::to_string(ws_.neighbourCount[i]) + " neighbours (limit " +
+                   std::to_string(maxNeighbours_) +
+                   "); h no longer follows the density (the seed's dh/dt or constant h in a "
+                   "strong expansion, or a particle rarefied at a contact under continuity "
+                   "density): use sph.smoothing_length = \"neighbours\" with summation density");
+    }
+    return {};
+  };
+  stopIfAnyRankFailed(problem());
   if (dt < dtMin) {
+    // The particle with the fastest sound crossing names the problem: the rank holding the
+    // fastest one reports it (dt is the same on every rank).
     std::size_t worst = 0;
-    for (std::size_t i = 1; i < p_.numReal; ++i)
-      if (p_.cs[i] / p_.h[i] > p_.cs[worst] / p_.h[worst]) worst = i;
+    double fastest = 0.0;
+    for (std::size_t i = 0; i < p_.numReal; ++i)
+      if (p_.cs[i] / p_.h[i] > fastest || i == 0) {
+        worst = i;
+        fastest = p_.cs[i] / p_.h[i];
+      }
+    const bool mine = p_.numReal > 0 && fastest >= domain_.comm().maximum(p_.numReal > 0 ? fastest : 0.0);
     std::ostringstream s;
     s << "time step " << dt << " s fell below dt_min " << dtMin << " s";
-    failAt(worst, s.str());
+    stopIfAnyRankFailed(mine ? failureMessage(worst, s.str()) : std::string());
   }
 }
 
@@ -357,11 +474,12 @@ bool Simulation::fireDueDeposits() {
     f.deposit = k;
     f.time = time_;
     f.step = step_;
-    for (const ConservedTotals& m : conservedTotalsByMaterial(p_, materials_.size())) {
+    for (const ConservedTotals& m : totalsByMaterial()) {
       f.kineticBefore.push_back(m.kinetic);
       f.internalBefore.push_back(m.internal);
     }
-    f.point = applyDeposit(scene_, k, bodyFirstIds_, p_, time_);
+    f.point = applyDeposit(scene_, k, bodyFirstIds_, p_, time_,
+                           domain_.distributed() ? &domain_.comm() : nullptr);
     firings_.push_back(std::move(f));
     any = true;
   }
@@ -369,7 +487,12 @@ bool Simulation::fireDueDeposits() {
 }
 
 void Simulation::step(double limit) {
-  if (step_ % kSortInterval == 0) sortForLocality();
+  if (step_ % kSortInterval == 0) {
+    // Particles that crossed into another rank's range move there (new ranges when the work is
+    // out of balance), then each rank orders its own for locality.
+    if (domain_.distributed()) domain_.rebalance(p_, particleCosts());
+    sortForLocality();
+  }
   // The deposit raises sound speeds by orders of magnitude: pressures, forces and the time step
   // must come from the state with the energy, not from the step before it.
   if (fireDueDeposits()) {

@@ -8,10 +8,12 @@
 #include <array>
 #include <memory>
 #include <cstdint>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "sim/parallel/distributed_domain.hpp"
 #include "sim/sph/boundaries.hpp"
 #include "sim/state/conservation.hpp"
 #include "sim/sph/hydro_workspace.hpp"
@@ -43,7 +45,10 @@ struct DepositFiring {
 
 class Simulation {
  public:
-  Simulation(Scene scene, ParticleSet particles, MaterialTable materials, int numThreads);
+  // `particles` are the whole scene's on every rank; a distributed run (`ranks` with more than
+  // one rank; nullptr: one) keeps this rank's share of them (sim/parallel/distributed_domain.hpp).
+  Simulation(Scene scene, ParticleSet particles, MaterialTable materials, int numThreads,
+             std::shared_ptr<const Communicator> ranks = nullptr);
   // Its packages hold state (the flaws, the leapfrog's caps): a copy would share them.
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
@@ -85,11 +90,30 @@ class Simulation {
   double dtNext() const { return dtNext_; }
   double lastDt() const { return lastDt_; }
   const Scene& scene() const { return scene_; }
+  // This rank's particles (all of them on one rank).
   const ParticleSet& particles() const { return p_; }
   ParticleSet& particles() { return p_; }
   const MaterialTable& materials() const { return materials_; }
-  ConservedTotals totals() const { return conservedTotals(p_); }
+  // Totals over every rank's particles, summed in rank order (collectives, as is every member
+  // below that reads all ranks).
+  ConservedTotals totals() const;
+  std::vector<ConservedTotals> totalsByMaterial() const;
   double meanNeighbours() const;
+  std::uint64_t totalParticles() const { return domain_.totalParticles(p_); }
+
+  // The ranks of this run and the decomposition's counters.
+  const Communicator& ranks() const { return domain_.comm(); }
+  const DistributedDomain& domain() const { return domain_; }
+  // Gathers every rank's particles for the outputs (a collective): afterwards outputParticles()
+  // on rank 0 holds them all in id order. On one rank it gathers nothing and outputParticles()
+  // is particles().
+  void collectParticles();
+  const ParticleSet& outputParticles() const {
+    return domain_.distributed() ? collected_ : p_;
+  }
+  // Every rank's particles near `points` (kernel reach), at rank 0: what gauges read. One rank:
+  // particles().
+  const ParticleSet& particlesNear(std::span<const std::array<double, 3>> points);
 
  private:
   void evaluateDerivatives();
@@ -98,6 +122,12 @@ class Simulation {
   void checkHealth(double dt) const;
   // Throws SimulationError naming the step, time, `reason` and particle i's state.
   [[noreturn]] void failAt(std::size_t i, const std::string& reason) const;
+  std::string failureMessage(std::size_t i, const std::string& reason) const;
+  // Stops every rank with the diagnosis of the lowest rank that has one (`local`, empty when
+  // this rank found nothing wrong).
+  void stopIfAnyRankFailed(const std::string& local) const;
+  // The measured work of each real particle, for the decomposition's balance.
+  std::vector<std::uint64_t> particleCosts() const;
   void sortForLocality();
   // Fires the delayed deposits due at the current time; true when one fired.
   bool fireDueDeposits();
@@ -108,7 +138,9 @@ class Simulation {
   PackageContext packageContext() const { return {materials_, ws_.dim, stateTime_}; }
 
   Scene scene_;
+  DistributedDomain domain_;
   ParticleSet p_;
+  ParticleSet collected_;  // rank 0 of a distributed run: every rank's particles (outputs)
   MaterialTable materials_;
   Boundaries boundaries_;
   HydroWorkspace ws_;

@@ -228,7 +228,7 @@ std::string describeRegion(const EnergyDepositSpec& dep, int dim) {
 // with the particles when they are reordered); without a centre, all of them equally
 // (du = E / M_body, the seed's DED).
 Point applyDeposit(const Scene& scene, std::size_t index, const std::vector<std::int64_t>& firstIdOfBody,
-                   ParticleSet& p, double time) {
+                   ParticleSet& p, double time, const Communicator* ranks) {
   const EnergyDepositSpec& dep = scene.deposits[index];
   const int dim = spatialDimension(scene.geometry);
   const std::size_t n = p.numReal;
@@ -251,6 +251,12 @@ Point applyDeposit(const Scene& scene, std::size_t index, const std::vector<std:
       w[i] = std::exp(-r2 / (dep.width * dep.width));
     weightedMass += p.mass[i] * w[i];
     for (int d = 0; d < 3; ++d) centroid[d] += p.mass[i] * w[i] * p.x[d][i];
+  }
+  if (ranks) {
+    std::array<double, 4> sums{weightedMass, centroid[0], centroid[1], centroid[2]};
+    ranks->sumInRankOrder(sums);
+    weightedMass = sums[0];
+    centroid = {sums[1], sums[2], sums[3]};
   }
   if (!(weightedMass > 0.0)) {
     std::string message = where(scene, dep.line) + ": key 'energy_deposits[" +

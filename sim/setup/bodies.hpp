@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "sim/solid/materials.hpp"
+#include "sim/parallel/communicator.hpp"
 #include "sim/state/particles.hpp"
 #include "sim/setup/scene.hpp"
 
@@ -27,10 +28,11 @@ std::vector<std::int64_t> bodyFirstIds(const Scene& scene, const MaterialTable& 
 // the particles in its region (and of its body, by the ids of bodyFirstIds, if it names one) at
 // this moment. `time` is the time it fires, for the message. Returns the centroid of the energy
 // (the mass- and weight-averaged position), the burst's point. Throws SceneError naming the file,
-// key, scene, time and region when the region holds no particles.
+// key, scene, time and region when the region holds no particles. In a distributed run
+// (`ranks` given) the region's mass and centroid are summed over every rank's particles.
 std::array<double, 3> applyDeposit(const Scene& scene, std::size_t index,
                                    const std::vector<std::int64_t>& firstIdOfBody, ParticleSet& p,
-                                   double time);
+                                   double time, const Communicator* ranks = nullptr);
 
 // Volume (area in 2D and RZ, length in 1D) of one lattice cell: cubic s^d, 2D hexagonal
 // s^2 sqrt(3)/2, 3D close packed (face-centred cubic, nearest neighbour s) s^3/sqrt(2).

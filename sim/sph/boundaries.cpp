@@ -88,7 +88,7 @@ void Boundaries::confine(ParticleSet& p, Vec3Array* alsoFlip) const {
   }
 }
 
-void Boundaries::makeGhosts(ParticleSet& p, double supportFactor) const {
+void Boundaries::makeGhosts(ParticleSet& p, double supportFactor, const Communicator* ranks) const {
   p.clearGhosts();
   flips_.clear();
   layer_.assign(faces_.size(), 0.0);
@@ -105,6 +105,7 @@ void Boundaries::makeGhosts(ParticleSet& p, double supportFactor) const {
     for (std::size_t i = 0; i < n; ++i)
       if (reachesLanding(face, p.x[d][i], supportFactor * p.h[i]))
         layer = std::max(layer, supportFactor * p.h[i]);
+    if (ranks) layer = ranks->maximum(layer);
     layer_[f] = layer;
     // Images of every particle inside the layer, appended in index order.
     std::vector<std::size_t> images;
@@ -142,12 +143,12 @@ void Boundaries::makeGhosts(ParticleSet& p, double supportFactor) const {
 void Boundaries::refreshGhosts(ParticleSet& p) const {
   const std::vector<const Field*> halo = haloFields(p);
   const std::size_t nReal = p.numReal;
-  for (std::size_t g = 0; g < p.numGhosts(); ++g)
+  for (std::size_t g = 0; g < numBoundaryGhosts(); ++g)
     copyHaloFields(p, halo, p.ghostSource[g], nReal + g, flips_[g]);
 }
 
 void Boundaries::refreshGhostTensor(const ParticleSet& p, std::vector<double>& tensor) const {
-  for (std::size_t g = 0; g < p.numGhosts(); ++g) {
+  for (std::size_t g = 0; g < numBoundaryGhosts(); ++g) {
     const double* source = &tensor[9 * p.ghostSource[g]];
     double* ghost = &tensor[9 * (p.numReal + g)];
     for (int a = 0; a < 3; ++a)

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "sim/parallel/communicator.hpp"
 #include "sim/state/particles.hpp"
 #include "sim/state/domain.hpp"
 #include "sim/state/geometry.hpp"
@@ -25,10 +26,15 @@ class Boundaries {
   // Drops old ghosts and adds images of the real particles lying within the ghost layer of each
   // wall and periodic face (and of earlier ghosts, so corners are covered). The layer of a face
   // reaches `supportFactor * h` beyond the largest h found near it. Copies all primary and EOS
-  // state to the ghosts.
-  void makeGhosts(ParticleSet& p, double supportFactor) const;
+  // state to the ghosts. In a distributed run (`ranks` given) each face's layer is the widest
+  // over all ranks, so that every rank images what another rank's particles near the face need.
+  void makeGhosts(ParticleSet& p, double supportFactor, const Communicator* ranks = nullptr) const;
+  // The ghosts the last makeGhosts made (the first numGhosts() after the real particles; halos
+  // from other ranks may follow them).
+  std::size_t numBoundaryGhosts() const { return flips_.size(); }
 
-  // Recopies per-particle fields from sources to ghosts (after the density pass changed them).
+  // Recopies per-particle fields from sources to this set's ghosts (after the density pass
+  // changed them).
   void refreshGhosts(ParticleSet& p) const;
 
   // Copies a full (not symmetric) 3 x 3 tensor per particle, stored row-major at 9 i, from

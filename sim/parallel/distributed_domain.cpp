@@ -1,0 +1,126 @@
+#include "sim/parallel/distributed_domain.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include "sim/parallel/particle_packing.hpp"
+
+namespace ejecta {
+
+DistributedDomain::DistributedDomain(std::shared_ptr<const Communicator> comm, int dimension,
+                                     DecompositionOptions options)
+    : comm_(comm ? std::move(comm) : std::make_shared<SerialCommunicator>()),
+      dimension_(dimension),
+      options_(options) {}
+
+void DistributedDomain::keepShare(ParticleSet& p) {
+  if (!distributed()) return;
+  p.clearGhosts();
+  // Every rank holds the same particles: each keeps a contiguous slice of them first, so the
+  // decomposition's collectives see every particle once.
+  const std::size_t n = p.numReal, ranks = static_cast<std::size_t>(comm_->size());
+  const std::size_t r = static_cast<std::size_t>(comm_->rank());
+  const std::size_t begin = n * r / ranks, end = n * (r + 1) / ranks;
+  std::vector<std::size_t> slice(end - begin);
+  std::iota(slice.begin(), slice.end(), begin);
+  p.permute(slice);
+  p.numReal = slice.size();
+  const std::vector<std::uint64_t> equal(p.numReal, 1);
+  decompose(p, equal);
+}
+
+void DistributedDomain::decompose(ParticleSet& p, std::span<const std::uint64_t> cost) {
+  decomposition_.dimension = dimension_;
+  decomposition_.box = globalParticleBox(p, dimension_, *comm_);
+  const std::vector<std::uint64_t> keys = hilbertKeys(p, p.numReal, decomposition_.box, dimension_);
+  decomposition_.splitters = balancedSplitters(keys, cost, *comm_);
+  ++stats_.rebalances;
+  std::vector<int> destination(p.numReal);
+  for (std::size_t i = 0; i < p.numReal; ++i) destination[i] = decomposition_.owner(keys[i]);
+  for (std::size_t i = 0; i < p.numReal; ++i) stats_.migrated += destination[i] != comm_->rank();
+  migrateParticles(p, destination, *comm_);
+}
+
+void DistributedDomain::rebalance(ParticleSet& p, std::span<const std::uint64_t> cost) {
+  if (!distributed()) return;
+  p.clearGhosts();
+  const double localCost = std::accumulate(cost.begin(), cost.end(), 0.0);
+  stats_.lastImbalance = loadImbalance(localCost, *comm_);
+  // A particle outside the box would get a clamped key: its owner would still be right, but the
+  // box no longer describes the particles (large motion), so the curve is laid anew.
+  bool inside = true;
+  for (int d = 0; d < dimension_ && inside; ++d)
+    for (std::size_t i = 0; i < p.numReal; ++i) {
+      const std::size_t a = static_cast<std::size_t>(d);
+      if (p.x[a][i] < decomposition_.box.lo[a] || p.x[a][i] > decomposition_.box.hi[a]) {
+        inside = false;
+        break;
+      }
+    }
+  if (decomposition_.empty() || !comm_->allTrue(inside) ||
+      stats_.lastImbalance > options_.rebalanceImbalance) {
+    decompose(p, cost);
+    return;
+  }
+  const std::vector<std::uint64_t> keys = hilbertKeys(p, p.numReal, decomposition_.box, dimension_);
+  std::vector<int> destination(p.numReal);
+  for (std::size_t i = 0; i < p.numReal; ++i) destination[i] = decomposition_.owner(keys[i]);
+  for (std::size_t i = 0; i < p.numReal; ++i) stats_.migrated += destination[i] != comm_->rank();
+  migrateParticles(p, destination, *comm_);
+}
+
+ParticleSet DistributedDomain::gatherIndices(const ParticleSet& p, std::span<const std::size_t> indices) const {
+  const ParticlePacker packer(p, PackedFields::All);
+  Bytes mine;
+  packer.pack(p, indices, mine);
+  const std::vector<Bytes> all = comm_->gatherToRoot(mine);
+  ParticleSet out = p;  // the same registry
+  out.clearGhosts();
+  if (!comm_->isRoot()) {
+    out.numReal = 0;
+    out.resize(0);
+    return out;
+  }
+  std::size_t total = 0;
+  for (const Bytes& b : all) total += packer.count(b);
+  out.resize(total);
+  std::size_t at = 0;
+  for (const Bytes& b : all) {
+    packer.unpack(out, b, at);
+    at += packer.count(b);
+  }
+  out.numReal = total;
+  std::vector<std::size_t> order(total);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return out.id[a] < out.id[b]; });
+  out.permute(order);
+  return out;
+}
+
+ParticleSet DistributedDomain::gatherToRoot(const ParticleSet& p) const {
+  std::vector<std::size_t> all(p.numReal);
+  std::iota(all.begin(), all.end(), std::size_t{0});
+  return gatherIndices(p, all);
+}
+
+ParticleSet DistributedDomain::gatherNear(const ParticleSet& p, std::span<const std::array<double, 3>> points,
+                                          double supportFactor) const {
+  std::vector<std::size_t> near;
+  for (std::size_t i = 0; i < p.numReal; ++i) {
+    const double reach = supportFactor * p.h[i];
+    for (const auto& q : points) {
+      double d2 = 0.0;
+      for (int d = 0; d < dimension_; ++d) {
+        const double dx = p.x[static_cast<std::size_t>(d)][i] - q[static_cast<std::size_t>(d)];
+        d2 += dx * dx;
+      }
+      if (d2 < reach * reach) {
+        near.push_back(i);
+        break;
+      }
+    }
+  }
+  return gatherIndices(p, near);
+}
+
+}  // namespace ejecta
