@@ -1,11 +1,31 @@
 #include "sim/parallel/distributed_domain.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <numeric>
 
 #include "sim/parallel/particle_packing.hpp"
 
 namespace ejecta {
+
+namespace {
+
+// Adds the wall time of its own life to `total`.
+class Stopwatch {
+ public:
+  explicit Stopwatch(double& total) : total_(total), start_(std::chrono::steady_clock::now()) {}
+  ~Stopwatch() {
+    total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+  Stopwatch(const Stopwatch&) = delete;
+  Stopwatch& operator=(const Stopwatch&) = delete;
+
+ private:
+  double& total_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace
 
 DistributedDomain::DistributedDomain(std::shared_ptr<const Communicator> comm, int dimension,
                                      DecompositionOptions options)
@@ -15,6 +35,7 @@ DistributedDomain::DistributedDomain(std::shared_ptr<const Communicator> comm, i
 
 void DistributedDomain::keepShare(ParticleSet& p) {
   if (!distributed()) return;
+  const Stopwatch watch(stats_.rebalanceSeconds);
   p.clearGhosts();
   // Every rank holds the same particles: each keeps a contiguous slice of them first, so the
   // decomposition's collectives see every particle once.
@@ -43,6 +64,7 @@ void DistributedDomain::decompose(ParticleSet& p, std::span<const std::uint64_t>
 
 void DistributedDomain::rebalance(ParticleSet& p, std::span<const std::uint64_t> cost) {
   if (!distributed()) return;
+  const Stopwatch watch(stats_.rebalanceSeconds);
   p.clearGhosts();
   const double localCost = std::accumulate(cost.begin(), cost.end(), 0.0);
   stats_.lastImbalance = loadImbalance(localCost, *comm_);
@@ -67,6 +89,23 @@ void DistributedDomain::rebalance(ParticleSet& p, std::span<const std::uint64_t>
   for (std::size_t i = 0; i < p.numReal; ++i) destination[i] = decomposition_.owner(keys[i]);
   for (std::size_t i = 0; i < p.numReal; ++i) stats_.migrated += destination[i] != comm_->rank();
   migrateParticles(p, destination, *comm_);
+}
+
+void DistributedDomain::buildHalos(ParticleSet& p, double supportFactor) {
+  const Stopwatch watch(stats_.haloSeconds);
+  halos_.build(p, dimension_, supportFactor, *comm_);
+  stats_.haloReceived = halos_.received();
+  stats_.haloSent = halos_.sent();
+}
+
+void DistributedDomain::refreshHalos(ParticleSet& p) const {
+  const Stopwatch watch(stats_.haloSeconds);
+  halos_.refresh(p, *comm_);
+}
+
+void DistributedDomain::refreshHaloArray(std::vector<double>& values, int stride) const {
+  const Stopwatch watch(stats_.haloSeconds);
+  halos_.refreshArray(values, stride, *comm_);
 }
 
 ParticleSet DistributedDomain::gatherIndices(const ParticleSet& p, std::span<const std::size_t> indices) const {

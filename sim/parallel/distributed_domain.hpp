@@ -3,6 +3,7 @@
 // decomposition, rebalanced by measured cost), the halos it borrows from other ranks, and the
 // gathers its outputs need. With one rank every operation is a no-op or the identity, and the
 // one-rank code path is the serial one, bit for bit (docs/parallel.md).
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -27,6 +28,9 @@ struct DomainStats {
   double lastImbalance = 0.0;   // at the last check (max / mean - 1)
   std::size_t haloReceived = 0; // halo particles at the last build
   std::size_t haloSent = 0;
+  // Wall time in the exchanges (waiting for slower ranks included) and in the decomposition.
+  double haloSeconds = 0.0;
+  double rebalanceSeconds = 0.0;
 };
 
 class DistributedDomain {
@@ -45,6 +49,10 @@ class DistributedDomain {
   // `cost[i]` is real particle i's measured work.
   void rebalance(ParticleSet& p, std::span<const std::uint64_t> cost);
 
+  // The halo exchange (sim/parallel/halo_exchange.hpp), timed into stats().
+  void buildHalos(ParticleSet& p, double supportFactor);
+  void refreshHalos(ParticleSet& p) const;
+  void refreshHaloArray(std::vector<double>& values, int stride) const;
   HaloExchange& halos() { return halos_; }
   const HaloExchange& halos() const { return halos_; }
 
@@ -67,7 +75,7 @@ class DistributedDomain {
   DecompositionOptions options_;
   Decomposition decomposition_;
   HaloExchange halos_;
-  DomainStats stats_;
+  mutable DomainStats stats_;
 };
 
 }  // namespace ejecta

@@ -272,7 +272,9 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
   ProgressLine progress(options.progress && root);
   RunOutcome outcome;
   bool lastWritten = atSnapshot;
+  double outputSeconds = 0.0;  // gathering and writing the outputs, the in-situ hooks'
   auto snapshot = [&](bool final) {
+    const auto begin = std::chrono::steady_clock::now();
     info.time = sim.time();
     info.step = sim.stepCount();
     info.dtNext = sim.dtNext();
@@ -281,6 +283,7 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
     if (snapshots) outputs.writeSnapshot(sim, info);
     if (options.onOutput && root) options.onOutput(sim, info, final);
     ++info.snapshotIndex;
+    outputSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   };
   if (!fresh)
     outputs.setCouplingReference(couplingReference(scene, info.initialMaterialKinetic,
@@ -354,6 +357,16 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
   s.tEnd = sim.time();
   s.wallSeconds = wall();
   s.threads = omp_get_max_threads();
+  s.ranks = sim.ranks().size();
+  if (s.ranks > 1) {
+    // Where a distributed run's time went, on the slowest rank of each (docs/parallel.md).
+    const DomainStats& d = sim.domain().stats();
+    s.extras.push_back({"halo_exchange_seconds", sim.ranks().maximum(d.haloSeconds)});
+    s.extras.push_back({"decomposition_seconds", sim.ranks().maximum(d.rebalanceSeconds)});
+    s.extras.push_back({"output_seconds", sim.ranks().maximum(outputSeconds)});
+    s.extras.push_back({"rebalances", static_cast<std::int64_t>(d.rebalances)});
+    s.extras.push_back({"load_imbalance", d.lastImbalance});
+  }
   s.energy.initial = info.initialEnergy;
   s.energy.final = t.total();
   const double expected = info.initialEnergy + sim.delayedEnergyAdded();
@@ -365,7 +378,6 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
   s.extras.push_back({"geometry", std::string(geometryName(scene.geometry))});
   s.extras.push_back({"kernel", std::string(kernelName(scene.sph.kernel))});
   s.extras.push_back({"mean_neighbours", sim.meanNeighbours()});
-  if (sim.ranks().size() > 1) s.extras.push_back({"ranks", static_cast<double>(sim.ranks().size())});
   s.extras.push_back({"particle_updates_per_second",
                       s.wallSeconds > 0 ? static_cast<double>(s.particles) *
                                               static_cast<double>(s.steps) / s.wallSeconds

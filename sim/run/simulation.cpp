@@ -288,7 +288,7 @@ void Simulation::evaluateDerivatives() {
   for (int attempt = 0;; ++attempt) {
     boundaries_.makeGhosts(p_, kKernelSupport * margin, distributed ? &ranks : nullptr);
     // Other ranks' particles (and their images) within reach of this rank's.
-    if (distributed) domain_.halos().build(p_, dim, kKernelSupport * margin, ranks);
+    if (distributed) domain_.buildHalos(p_, kKernelSupport * margin);
     // Cells about one (typical) kernel support across.
     std::vector<double> hs(p_.h.begin(), p_.h.begin() + static_cast<std::ptrdiff_t>(p_.numReal));
     if (hs.empty()) hs.assign(1, p_.size() > 0 ? p_.h[0] : 1.0);  // a rank left without particles
@@ -320,10 +320,10 @@ void Simulation::evaluateDerivatives() {
   evaluateEquationOfState();
   // Ghosts first (their sources are here), then the halos (which include other ranks' ghosts).
   boundaries_.refreshGhosts(p_);
-  if (distributed) domain_.halos().refresh(p_, ranks);
+  if (distributed) domain_.refreshHalos(p_);
   if (scene_.sph.viscosityReconstruction != ViscosityReconstruction::None) {
     boundaries_.refreshGhostTensor(p_, ws_.velocityGradient);
-    if (distributed) domain_.halos().refreshArray(ws_.velocityGradient, 9, ranks);
+    if (distributed) domain_.refreshHaloArray(ws_.velocityGradient, 9);
   }
   if (ws_.geometry == Geometry::Axisymmetric) {
     for (std::size_t g = p_.numReal; g < p_.numReal + boundaries_.numBoundaryGhosts(); ++g) {
@@ -332,8 +332,8 @@ void Simulation::evaluateDerivatives() {
       ws_.dSmoothedR[g] = ws_.dSmoothedR[s];
     }
     if (distributed) {
-      domain_.halos().refreshArray(ws_.smoothedR, 1, ranks);
-      domain_.halos().refreshArray(ws_.dSmoothedR, 1, ranks);
+      domain_.refreshHaloArray(ws_.smoothedR, 1);
+      domain_.refreshHaloArray(ws_.dSmoothedR, 1);
     }
   }
   switch (dim) {

@@ -60,6 +60,7 @@ void writeSummaryJson(const std::string& path, const RunSummary& s) {
   doc["t_end"] = s.tEnd;
   doc["wall_seconds"] = s.wallSeconds;
   doc["threads"] = s.threads;
+  if (s.ranks > 1) doc["ranks"] = s.ranks;
   doc["energy"] = {{"initial", s.energy.initial},
                    {"final", s.energy.final},
                    {"relative_error", s.energy.relativeError}};

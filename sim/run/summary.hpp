@@ -20,7 +20,8 @@ struct RunSummary {
   long steps = 0;
   double tEnd = 0.0;         // simulation time reached [s]
   double wallSeconds = 0.0;  // wall-clock duration [s]
-  int threads = 0;           // OpenMP threads used
+  int threads = 0;           // OpenMP threads used (per rank)
+  int ranks = 1;             // MPI ranks (written only for a distributed run)
 
   struct Energy {
     double initial = 0.0;         // [J]
