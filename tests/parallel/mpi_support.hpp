@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/io/particle_difference.hpp"
 #include "sim/parallel/communicator.hpp"
 #include "sim/run/simulation.hpp"
 #include "sim/setup/bodies.hpp"
@@ -52,45 +53,15 @@ inline RankedRun runOn(const Scene& scene, std::shared_ptr<const Communicator> r
   return out;
 }
 
-// The largest difference between two runs' values of any stored floating-point field, over the
-// largest magnitude of that field (so a field that is zero nearly everywhere is not judged by
-// its tiny entries), with the field's name. Integer fields must match exactly.
-struct FieldDifference {
-  double relative = 0.0;
-  std::string field;
-};
-
+// The largest relative difference of any stored field (sim/io/particle_difference.hpp), failing
+// the test when the two sets do not hold the same particles.
 inline FieldDifference compareParticles(const ParticleSet& a, const ParticleSet& b) {
-  FieldDifference worst;
-  EXPECT_EQ(a.numReal, b.numReal);
-  if (a.numReal != b.numReal) return {1.0, "particle count"};
-  for (const Field& f : a.fields()) {
-    if (f.storage.kind == FieldStorage::Kind::Derived || f.spec.output == FieldOutput::None) continue;
-    const Field* g = b.field(f.spec.name);
-    EXPECT_NE(g, nullptr) << f.spec.name;
-    if (!g) continue;
-    if (f.storage.kind == FieldStorage::Kind::Int32) {
-      EXPECT_TRUE(a.*f.storage.int32 == b.*g->storage.int32) << f.spec.name;
-      continue;
-    }
-    if (f.storage.kind == FieldStorage::Kind::Int64) {
-      EXPECT_TRUE(a.*f.storage.int64 == b.*g->storage.int64) << f.spec.name;
-      continue;
-    }
-    for (int c = 0; c < f.spec.components; ++c) {
-      const std::vector<double>& x = a.column(f, c);
-      const std::vector<double>& y = b.column(*g, c);
-      double scale = 0.0, diff = 0.0;
-      for (std::size_t i = 0; i < a.numReal; ++i) {
-        if (std::isinf(x[i]) && x[i] == y[i]) continue;  // lighting times of non-explosives
-        scale = std::max(scale, std::abs(x[i]));
-        diff = std::max(diff, std::abs(x[i] - y[i]));
-      }
-      const double relative = scale > 0.0 ? diff / scale : diff;
-      if (!(relative <= worst.relative)) worst = {relative, f.spec.name + "[" + std::to_string(c) + "]"};
-    }
+  try {
+    return largestDifference(particleDifferences(a, b));
+  } catch (const std::invalid_argument& e) {
+    ADD_FAILURE() << e.what();
+    return {"particle ids", 1.0, 1.0};
   }
-  return worst;
 }
 
 }  // namespace ejecta::test

@@ -41,14 +41,18 @@ Scene sceneFile(const std::string& relative, const std::vector<std::string>& ove
 void expectSameAsOneRank(const Scene& scene) {
   const RankedRun one = runOn(scene, std::make_shared<SerialCommunicator>());
   const RankedRun many = runOn(scene, world());
+  // Every rank took part: it held particles and borrowed a halo.
+  EXPECT_GT(many.stats.haloReceived, 0u) << scene.name << " rank " << world()->rank();
+  const std::uint64_t migrated = world()->sum(many.stats.migrated);
   EXPECT_EQ(one.steps, many.steps) << scene.name;
   EXPECT_NEAR(one.totals.total(), many.totals.total(), 1e-12 * std::abs(one.totals.total()));
   if (!world()->isRoot()) return;
   const FieldDifference d = compareParticles(one.particles, many.particles);
   EXPECT_LE(d.relative, kTolerance) << scene.name << ": field " << d.field;
-  std::printf("[ ranks %d ] %s: %ld steps, %zu particles, worst field %s differs by %.2e of its "
-              "largest value\n", world()->size(), scene.name.c_str(), many.steps,
-              many.particles.numReal, d.field.c_str(), d.relative);
+  std::printf("[ ranks %d ] %s: %ld steps, %zu particles (%zu moved rank, %ld decompositions), "
+              "worst field %s differs by %.2e of its largest value\n", world()->size(),
+              scene.name.c_str(), many.steps, many.particles.numReal, static_cast<std::size_t>(migrated),
+              many.stats.rebalances, d.field.c_str(), d.relative);
 }
 
 TEST(MpiRuns, Sod1dWithWalls) { expectSameAsOneRank(sceneFile("verification/sod_1d.toml", {})); }
@@ -68,7 +72,7 @@ TEST(MpiRuns, SedovRzWithTheAxisMirror) {
 TEST(MpiRuns, Sedov3dWithWalls) {
   expectSameAsOneRank(sceneFile("verification/sedov_3d.toml",
                                 {"bodies[0].spacing=0.0833333333333", "energy_deposits[0].radius=0.2",
-                                 "time.t_end=0.004 s"}));
+                                 "time.t_end=0.03 s"}));
 }
 
 TEST(MpiRuns, PeriodicBlast) {
@@ -78,7 +82,7 @@ TEST(MpiRuns, PeriodicBlast) {
 TEST(MpiRuns, ImpactRzWithStrengthFractureAndThreeMaterials) {
   expectSameAsOneRank(sceneFile("impact_rz.toml",
                                 {"bodies[0].spacing=0.5 m", "bodies[1].spacing=1.5 m",
-                                 "bodies[2].spacing=1.5 m", "time.t_end=0.25 ms"}));
+                                 "bodies[2].spacing=1.5 m", "time.t_end=0.6 ms"}));
 }
 
 TEST(MpiRuns, JwlBurnInRz) {
@@ -90,7 +94,7 @@ TEST(MpiRuns, JwlBurnInRz) {
 TEST(MpiRuns, DelayedDepositSpanningRanks) {
   expectSameAsOneRank(sceneFile("verification/sedov_2d.toml",
                                 {"bodies[0].spacing=0.025", "energy_deposits[0].width=0.1",
-                                 "energy_deposits[0].time=0.004 s", "time.t_end=0.012 s"}));
+                                 "energy_deposits[0].time=0.004 s", "time.t_end=0.02 s"}));
 }
 
 }  // namespace
