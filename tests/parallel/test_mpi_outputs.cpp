@@ -12,6 +12,7 @@
 
 #include "parallel/mpi_support.hpp"
 #include "sim/io/snapshot.hpp"
+#include "sim/run/physics_package.hpp"
 #include "sim/run/run.hpp"
 #include "support/periodic_blast.hpp"
 
@@ -162,6 +163,49 @@ TEST_F(MpiOutputs, RestartOnOneRankFewerMatchesAnUninterruptedRun) {
   EXPECT_LE(csvDifference(root_ / "one_rank" / "energy.csv", cut / "energy.csv"), kTolerance);
   std::printf("[ ranks %d, resumed on %d ] snapshot 4: worst field %s differs by %.2e\n",
               world()->size(), world()->size() - 1, d.field.c_str(), d.relative);
+}
+
+// Poisons one particle (by id) at the end of a step once the run passes `time`: a bad state that
+// only the rank holding the particle can see.
+class PoisonOneParticle : public PhysicsPackage {
+ public:
+  PoisonOneParticle(std::int64_t id, double time) : id_(id), time_(time) {}
+  std::string name() const override { return "poison"; }
+  void registerFields(ParticleSet&) override {}
+  void finalize(ParticleSet& p, const PackageContext& c) override {
+    if (c.time < time_) return;
+    for (std::size_t i = 0; i < p.numReal; ++i)
+      if (p.id[i] == id_) p.u[i] = std::nan("");
+  }
+
+ private:
+  std::int64_t id_;
+  double time_;
+};
+
+TEST_F(MpiOutputs, ABadStateOnOneRankStopsEveryRankWithItsDiagnosisAndALastSnapshot) {
+  const fs::path dir = root_ / "failed";
+  RunOptions options;
+  options.outDir = dir.string();
+  options.sceneSource = sceneSource();
+  options.threads = 1;
+  options.ranks = world();
+  options.packages = {std::make_shared<PoisonOneParticle>(1234, 0.006)};
+  const RunOutcome r = runScene(parseScene(sceneSource(), "test_blast.toml"), options);
+  // Every rank stops, with the same message, naming the particle wherever it was.
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("non-finite state"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find("particle id 1234 "), std::string::npos) << r.error;
+  EXPECT_EQ(world()->firstMessage(world()->isRoot() ? r.error : std::string()), r.error);
+  barrier();
+  if (!world()->isRoot()) return;
+  const nlohmann::json s = summary(dir);
+  EXPECT_EQ(s["status"], "failed");
+  EXPECT_EQ(s["message"], r.error);
+  // The last snapshot holds the offending state, every rank's particles in it.
+  const ParticleSet last = snapshotById(dir / "snapshots" / "snap_0002.h5");
+  EXPECT_EQ(last.numReal, 1600u);
+  EXPECT_TRUE(std::isnan(last.u[1234]));
 }
 
 }  // namespace
