@@ -126,6 +126,12 @@ void printSummary(const RunOutcome& r, const HookResults& hooks, const std::stri
 
 }  // namespace
 
+void addInSituOutputs(const Scene& scene, RunOptions& options, bool charts) {
+  fields::addFieldOutputs(options, scene);
+  addImageOutputs(options, scene, charts);
+  addThermalOutputs(options, scene, charts);
+}
+
 int runCommand(const RunArgs& args) {
   RunOptions options;
   options.threads = args.threads;

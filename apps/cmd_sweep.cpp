@@ -1,7 +1,8 @@
 // `ejecta sweep SCENE --vary key=v1,v2,...`: runs the variants of a scene as separate `ejecta run`
 // processes (several at once where cores allow), then collects what each coupled into the
 // target into sweep.csv, prints it as a table and charts it as sweep.png (coupling/sweep_chart.hpp;
-// docs/coupling.md, docs/asteroid_studies.md).
+// docs/coupling.md, docs/asteroid_studies.md). Under `mpirun -np N` the variants are spread over
+// groups of ranks instead, each variant a distributed run on its group (docs/parallel.md).
 #include <nlohmann/json.hpp>
 #include <omp.h>
 #include <fcntl.h>
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -22,6 +24,8 @@
 #include "coupling/sweep_chart.hpp"
 #include "core/atomic_file.hpp"
 #include "render/charts.hpp"
+#include "sim/parallel/communicator.hpp"
+#include "sim/run/run.hpp"
 #include "sim/run/sweep.hpp"
 #include "sim/setup/scene.hpp"
 
@@ -67,6 +71,95 @@ pid_t spawnRun(const std::string& scene, const std::vector<std::string>& overrid
   posix_spawn_file_actions_destroy(&actions);
   if (rc != 0) throw std::runtime_error("sweep: cannot start 'ejecta run' (" + std::to_string(rc) + ")");
   return pid;
+}
+
+// One rank: each variant a separate `ejecta run` process, as many at once as cores allow (each
+// with its share of the threads); returns their exit statuses.
+std::vector<int> runVariantsAsProcesses(const SweepArgs& args,
+                                        const std::vector<std::vector<std::string>>& variants,
+                                        const std::string& name, const fs::path& out,
+                                        const std::function<fs::path(std::size_t)>& dirOf) {
+  fs::create_directories(out);
+  // The cores this sweep may use: OMP_NUM_THREADS when set (a shared machine), else all.
+  const int cores = std::max(1, std::min(omp_get_num_procs(), omp_get_max_threads()));
+  const int jobs = std::clamp(args.jobs > 0 ? args.jobs : cores, 1, static_cast<int>(variants.size()));
+  const int threads = std::max(1, cores / jobs);
+  std::fprintf(stderr, "ejecta: sweep of '%s': %zu variants, %d at a time with %d thread%s each -> %s\n",
+               name.c_str(), variants.size(), jobs, threads, threads == 1 ? "" : "s", out.c_str());
+
+  std::vector<int> status(variants.size(), -1);
+  std::vector<Child> running;
+  std::size_t next = 0;
+  while (next < variants.size() || !running.empty()) {
+    while (next < variants.size() && static_cast<int>(running.size()) < jobs) {
+      std::vector<std::string> all = args.overrides;
+      all.insert(all.end(), variants[next].begin(), variants[next].end());
+      fs::create_directories(dirOf(next));
+      running.push_back({spawnRun(args.scene, all, dirOf(next).string(), threads,
+                                  dirOf(next) / "run.log"), next});
+      ++next;
+    }
+    int wstatus = 0;
+    const pid_t done = ::wait(&wstatus);
+    if (done < 0) throw std::runtime_error("sweep: wait failed");
+    for (auto it = running.begin(); it != running.end(); ++it)
+      if (it->pid == done) {
+        status[it->variant] = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : 128;
+        std::fprintf(stderr, "ejecta: variant %zu (%s) %s\n", it->variant,
+                     variants[it->variant].front().c_str(),
+                     status[it->variant] == 0 ? "done" : "FAILED (see its run.log)");
+        running.erase(it);
+        break;
+      }
+  }
+  return status;
+}
+
+// Under an MPI launcher: the ranks split into min(ranks, variants) groups, group g runs variants
+// g, g + groups, ... in this process (each a distributed run on the group's sub-communicator),
+// and rank 0 learns every variant's exit status (0 completed, 2 failed, 1 an error). A variant's
+// run.log holds its outcome.
+std::vector<int> runVariantsOnRanks(const Communicator& world, const SweepArgs& args,
+                                    const std::vector<std::vector<std::string>>& variants,
+                                    const std::function<fs::path(std::size_t)>& dirOf) {
+  const int groups = std::min(world.size(), static_cast<int>(variants.size()));
+  const int group = world.rank() * groups / world.size();
+  const std::shared_ptr<const Communicator> ranks = world.split(group);
+  std::ifstream in(args.scene);
+  std::ostringstream text;
+  text << in.rdbuf();
+  std::vector<int> status(variants.size(), 0);
+  for (std::size_t k = static_cast<std::size_t>(group); k < variants.size(); k += static_cast<std::size_t>(groups)) {
+    std::vector<std::string> all = args.overrides;
+    all.insert(all.end(), variants[k].begin(), variants[k].end());
+    RunOptions options;
+    options.outDir = dirOf(k).string();
+    options.sceneSource = text.str();
+    options.overrides = all;
+    options.ranks = ranks;
+    options.configure = [](const Scene& scene, RunOptions& o) { addInSituOutputs(scene, o, true); };
+    std::string outcome;
+    try {
+      const RunOutcome r = runScene(loadScene(args.scene, all), options);
+      status[k] = r.ok ? 0 : 2;
+      outcome = r.ok ? "completed" : "failed: " + r.error;
+    } catch (const std::exception& e) {  // the same error on every rank of the group
+      status[k] = 1;
+      outcome = std::string("error: ") + e.what();
+    }
+    if (ranks->isRoot()) {
+      std::ofstream log(dirOf(k) / "run.log");
+      log << "ejecta: variant " << k << " on " << ranks->size() << " rank(s): " << outcome << "\n";
+      std::fprintf(stderr, "ejecta: variant %zu (%s) %s\n", k, variants[k].front().c_str(),
+                   status[k] == 0 ? "done" : "FAILED (see its run.log)");
+    }
+  }
+  // Each group's root reports its variants; the others report 0 (the sum is the status).
+  std::vector<std::uint64_t> reported(variants.size());
+  for (std::size_t k = 0; k < variants.size(); ++k)
+    reported[k] = ranks->isRoot() ? static_cast<std::uint64_t>(status[k]) : 0;
+  world.sumInPlace(reported);
+  return {reported.begin(), reported.end()};
 }
 
 std::string csvCell(std::string s) {
@@ -120,43 +213,24 @@ int sweepCommand(const SweepArgs& args) {
     name = loadScene(args.scene, all).name;
   }
   const fs::path out = args.outDir.empty() ? fs::path("runs") / (name + "_sweep") : fs::path(args.outDir);
-  fs::create_directories(out);
-  // The cores this sweep may use: OMP_NUM_THREADS when set (a shared machine), else all.
-  const int cores = std::max(1, std::min(omp_get_num_procs(), omp_get_max_threads()));
-  const int jobs = std::clamp(args.jobs > 0 ? args.jobs : cores, 1, static_cast<int>(variants.size()));
-  const int threads = std::max(1, cores / jobs);
-  std::fprintf(stderr, "ejecta: sweep of '%s': %zu variants, %d at a time with %d thread%s each -> %s\n",
-               name.c_str(), variants.size(), jobs, threads, threads == 1 ? "" : "s", out.c_str());
-
-  std::vector<int> status(variants.size(), -1);
-  std::vector<Child> running;
-  std::size_t next = 0;
+  const std::shared_ptr<const Communicator> world = worldCommunicator();
   auto dirOf = [&](std::size_t k) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "variant_%03zu", k);
     return out / buf;
   };
-  while (next < variants.size() || !running.empty()) {
-    while (next < variants.size() && static_cast<int>(running.size()) < jobs) {
-      std::vector<std::string> all = args.overrides;
-      all.insert(all.end(), variants[next].begin(), variants[next].end());
-      fs::create_directories(dirOf(next));
-      running.push_back({spawnRun(args.scene, all, dirOf(next).string(), threads,
-                                  dirOf(next) / "run.log"), next});
-      ++next;
+  std::vector<int> status(variants.size(), -1);
+  if (world->size() > 1) {
+    if (world->isRoot()) {
+      for (std::size_t k = 0; k < variants.size(); ++k) fs::create_directories(dirOf(k));
+      std::fprintf(stderr, "ejecta: sweep of '%s': %zu variants over %d ranks -> %s\n", name.c_str(),
+                   variants.size(), world->size(), out.c_str());
     }
-    int wstatus = 0;
-    const pid_t done = ::wait(&wstatus);
-    if (done < 0) throw std::runtime_error("sweep: wait failed");
-    for (auto it = running.begin(); it != running.end(); ++it)
-      if (it->pid == done) {
-        status[it->variant] = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : 128;
-        std::fprintf(stderr, "ejecta: variant %zu (%s) %s\n", it->variant,
-                     variants[it->variant].front().c_str(),
-                     status[it->variant] == 0 ? "done" : "FAILED (see its run.log)");
-        running.erase(it);
-        break;
-      }
+    world->sum(0);  // the folders exist before any group writes
+    status = runVariantsOnRanks(*world, args, variants, dirOf);
+    if (!world->isRoot()) return 0;  // rank 0 tabulates and returns the sweep's status
+  } else {
+    status = runVariantsAsProcesses(args, variants, name, out, dirOf);
   }
 
   // Collect: one row per variant, the varied values and what the summary reports.

@@ -4,7 +4,16 @@
 #include <string>
 #include <vector>
 
+namespace ejecta {
+struct RunOptions;
+struct Scene;
+}  // namespace ejecta
+
 namespace ejecta::app {
+
+// The in-situ outputs `ejecta run` adds to a run of `scene` (grids and the crater, images,
+// thermal passes), as RunOptions::configure adds them: what a sweep's variants run with too.
+void addInSituOutputs(const Scene& scene, RunOptions& options, bool charts);
 
 struct RunArgs {
   std::string scene;                  // path; empty = the embedded default scene

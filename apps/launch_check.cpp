@@ -39,10 +39,15 @@ std::optional<std::string> multiRankRefusal(const std::string& subcommand) {
            "libopenmpi-dev and rebuild; docs/parallel.md), and each rank would run the whole "
            "command and write the same output files. Run it without the MPI launcher, or with "
            "-np 1; each run is multi-threaded already (--threads).";
-  if (subcommand == "run") return std::nullopt;
+  if (distributedCommand(subcommand)) return std::nullopt;
   return "launched as " + std::to_string(*ranks) + " MPI ranks, but 'ejecta " + subcommand +
          "' runs on one rank (each rank would run the whole command and write the same output "
-         "files); only 'ejecta run' is distributed. Run it without the MPI launcher, or with -np 1.";
+         "files); only 'ejecta run' and 'ejecta sweep' are distributed. Run it without the MPI "
+         "launcher, or with -np 1.";
+}
+
+bool distributedCommand(const std::string& subcommand) {
+  return builtWithMpi() && (subcommand == "run" || subcommand == "sweep");
 }
 
 }  // namespace ejecta::app

@@ -136,10 +136,11 @@ int main(int argc, char** argv) {
     if (ejecta::app::isFirstRank()) std::fprintf(stderr, "ejecta: error: %s\n", refusal->c_str());
     return 2;
   }
-  // MPI starts only for `run` under a launcher: a plain `ejecta run` needs no MPI runtime, and
-  // the other commands run on one rank.
+  // MPI starts only for the distributed commands under a launcher: a plain `ejecta run` needs
+  // no MPI runtime, and the other commands run on one rank.
   std::optional<ejecta::MpiSession> mpi;
-  if (ejecta::app::launchedRanks() && subcommand == "run") mpi.emplace(&argc, &argv);
+  if (ejecta::app::launchedRanks() && ejecta::app::distributedCommand(subcommand))
+    mpi.emplace(&argc, &argv);
   const bool distributed = mpi && ejecta::app::launchedRanks().value_or(1) > 1;
   try {
     if (*runCmd) return ejecta::app::runCommand(run);
