@@ -30,6 +30,12 @@ class Communicator {
   // Personalised all-to-all: toRank[r] goes to rank r (toRank.size() == size()); returns what
   // each rank sent here, indexed by the sender.
   virtual std::vector<Bytes> exchange(const std::vector<Bytes>& toRank) const = 0;
+  // Point to point with known partners: sends payloads[k] to rank to[k] and returns what each
+  // rank of `from` sent here, in from's order. Every rank this one lists in `to` must list this
+  // one in its `from`, and the other way round (a message may be empty). Costs a latency per
+  // partner rather than per rank: the halo exchange, whose partners are a rank's neighbours.
+  virtual std::vector<Bytes> exchangeWith(std::span<const int> to, const std::vector<Bytes>& payloads,
+                                          std::span<const int> from) const = 0;
   // Every rank's bytes at rank 0 (indexed by rank there; empty on the other ranks).
   virtual std::vector<Bytes> gatherToRoot(std::span<const std::byte> mine) const = 0;
   // Element-wise over ranks, in place (exact: integer sums and extrema do not depend on order).
@@ -62,6 +68,10 @@ class SerialCommunicator final : public Communicator {
     return {Bytes(mine.begin(), mine.end())};
   }
   std::vector<Bytes> exchange(const std::vector<Bytes>& toRank) const override { return toRank; }
+  std::vector<Bytes> exchangeWith(std::span<const int> to, const std::vector<Bytes>& payloads,
+                                  std::span<const int> from) const override {
+    return !to.empty() && !from.empty() ? payloads : std::vector<Bytes>(from.size());
+  }
   std::vector<Bytes> gatherToRoot(std::span<const std::byte> mine) const override {
     return allGather(mine);
   }

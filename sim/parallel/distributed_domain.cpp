@@ -113,13 +113,8 @@ ParticleSet DistributedDomain::gatherIndices(const ParticleSet& p, std::span<con
   Bytes mine;
   packer.pack(p, indices, mine);
   const std::vector<Bytes> all = comm_->gatherToRoot(mine);
-  ParticleSet out = p;  // the same registry
-  out.clearGhosts();
-  if (!comm_->isRoot()) {
-    out.numReal = 0;
-    out.resize(0);
-    return out;
-  }
+  ParticleSet out = p.withSameFields();  // the same registry, no values copied
+  if (!comm_->isRoot()) return out;
   std::size_t total = 0;
   for (const Bytes& b : all) total += packer.count(b);
   out.resize(total);

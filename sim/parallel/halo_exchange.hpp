@@ -3,12 +3,19 @@
 // this rank's ghosts (ParticleSet::ghostSource = kRemoteSource), so the density and force passes
 // see every neighbour exactly as a one-rank run does.
 //
-// Which particles: rank A sends particle j (a real one, or one of A's wall, axis and periodic
-// images) to rank B when j lies within max(R_B, k h_j) of the box around B's real particles,
-// R_B being the largest k h of B's real particles and k the kernel support with its margin. Any
-// pair i (on B), j with |x_ij| < k max(h_i, h_j) then has j on B, since the distance from j to
-// B's box is at most |x_ij|. The boxes are exact for any decomposition, so correctness never
-// depends on how compact the ranks' domains are, only the halo's size does.
+// Which particles: each rank describes its real particles by a few dozen boxes (the tight box of
+// each occupied cell of a 4 x 4 x 4 grid over them; 64 segments in 1D, 8 x 8 in 2D) and R, the
+// largest k h among them, k being the kernel support with the margin h may grow by before the
+// halos must be rebuilt. Rank A sends particle j (a real one, or one of A's wall, axis and
+// periodic images) to rank B when j lies within max(R_B, k h_j) of one of B's boxes. Any pair
+// i (on B), j with |x_ij| < k max(h_i, h_j) then has j on B, since i lies in one of B's boxes
+// and the distance from j to that box is at most |x_ij|. The boxes cover the particles whatever
+// the decomposition, so correctness never depends on how compact the ranks' domains are, only
+// the halo's size does; the grid of boxes keeps it close to the exact halo where a rank's piece
+// of the Hilbert curve is ragged (docs/parallel.md).
+//
+// Cost: messages go only between neighbouring ranks (whose extents come within reach of each
+// other), and a rank tests only its particles in cells near a neighbour's boxes.
 #include <cstddef>
 #include <limits>
 #include <span>
@@ -37,10 +44,14 @@ class HaloExchange {
 
   std::size_t received() const { return received_; }
   std::size_t sent() const;
+  // The ranks this one sends to and receives from (its neighbours at the last build).
+  std::size_t partners() const { return sendRanks_.size(); }
 
  private:
-  std::vector<std::vector<std::size_t>> sendTo_;  // per rank: local indices sent there
-  std::vector<std::size_t> firstFrom_;            // per rank: index of its first halo here
+  std::vector<int> sendRanks_;                    // neighbours that may receive from this rank
+  std::vector<std::vector<std::size_t>> sendTo_;  // per send rank: local indices sent there
+  std::vector<int> recvRanks_;                    // neighbours that may send to this rank
+  std::vector<std::size_t> firstFrom_;            // per receive rank: index of its first halo
   std::size_t received_ = 0;
 };
 

@@ -89,6 +89,42 @@ class MpiCommunicator final : public Communicator {
     return splitBytes(recv, recvCounts, recvDispl);
   }
 
+  std::vector<Bytes> exchangeWith(std::span<const int> to, const std::vector<Bytes>& payloads,
+                                  std::span<const int> from) const override {
+    // Sizes first, then the payloads; every receive is posted before the sends it waits on.
+    constexpr int kSizeTag = 7101, kDataTag = 7102;
+    std::vector<std::uint64_t> sendSizes(to.size()), recvSizes(from.size());
+    std::vector<MPI_Request> requests;
+    requests.reserve(2 * (to.size() + from.size()));
+    for (std::size_t k = 0; k < from.size(); ++k) {
+      requests.emplace_back();
+      MPI_Irecv(&recvSizes[k], 1, MPI_UINT64_T, from[k], kSizeTag, comm_, &requests.back());
+    }
+    for (std::size_t k = 0; k < to.size(); ++k) {
+      sendSizes[k] = payloads[k].size();
+      requests.emplace_back();
+      MPI_Isend(&sendSizes[k], 1, MPI_UINT64_T, to[k], kSizeTag, comm_, &requests.back());
+    }
+    MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+    requests.clear();
+    std::vector<Bytes> received(from.size());
+    for (std::size_t k = 0; k < from.size(); ++k) {
+      received[k].resize(recvSizes[k]);
+      if (recvSizes[k] == 0) continue;
+      requests.emplace_back();
+      MPI_Irecv(received[k].data(), checkedCount(recvSizes[k]), MPI_BYTE, from[k], kDataTag, comm_,
+                &requests.back());
+    }
+    for (std::size_t k = 0; k < to.size(); ++k) {
+      if (payloads[k].empty()) continue;
+      requests.emplace_back();
+      MPI_Isend(payloads[k].data(), checkedCount(payloads[k].size()), MPI_BYTE, to[k], kDataTag,
+                comm_, &requests.back());
+    }
+    MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+    return received;
+  }
+
   std::vector<Bytes> gatherToRoot(std::span<const std::byte> mine) const override {
     int count = checkedCount(mine.size());
     std::vector<int> counts(static_cast<std::size_t>(size_));

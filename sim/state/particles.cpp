@@ -111,6 +111,18 @@ void ParticleSet::setClampRange(std::string_view name, double lo, double hi) {
   throw std::logic_error("setClampRange: no field '" + std::string(name) + "'");
 }
 
+ParticleSet ParticleSet::withSameFields() const {
+  ParticleSet out;
+  out.fields_ = fields_;
+  out.fieldGroups_ = fieldGroups_;
+  out.extra_.assign(extra_.size(), {});
+  out.stressComponents_ = stressComponents_;
+  out.fracture_ = fracture_;
+  out.burn_ = burn_;
+  out.viscositySwitch_ = viscositySwitch_;
+  return out;
+}
+
 void ParticleSet::resize(std::size_t n) {
   forEachColumn([n](auto& arr, double fill) {
     using T = typename std::decay_t<decltype(arr)>::value_type;

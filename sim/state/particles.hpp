@@ -135,6 +135,10 @@ struct ParticleSet {
   // Sets the range of a Clamp-limited field (the viscosity switch's alpha from the scene).
   void setClampRange(std::string_view name, double lo, double hi);
 
+  // A set with the same fields declared (groups, package columns, stress components) and no
+  // particles: what a gather fills, without copying this set's values.
+  ParticleSet withSameFields() const;
+
   // Resize every array to n particles (new entries zeroed; omega set to 1).
   void resize(std::size_t n);
   // Append one particle with primary state; derived fields zeroed.
