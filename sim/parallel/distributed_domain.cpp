@@ -37,6 +37,15 @@ void DistributedDomain::keepShare(ParticleSet& p) {
   if (!distributed()) return;
   const Stopwatch watch(stats_.rebalanceSeconds);
   p.clearGhosts();
+  std::vector<double> lo{static_cast<double>(p.numReal), p.numReal ? static_cast<double>(p.id.front()) : -1.0,
+                         p.numReal ? static_cast<double>(p.id[p.numReal - 1]) : -1.0};
+  std::vector<double> hi = lo;
+  comm_->minInPlace(lo);
+  comm_->maxInPlace(hi);
+  if (lo != hi) {  // slices already: lay the curve over them
+    decompose(p, std::vector<std::uint64_t>(p.numReal, 1));
+    return;
+  }
   // Every rank holds the same particles: each keeps a contiguous slice of them first, so the
   // decomposition's collectives see every particle once.
   const std::size_t n = p.numReal, ranks = static_cast<std::size_t>(comm_->size());

@@ -41,8 +41,11 @@ class DistributedDomain {
   std::shared_ptr<const Communicator> shared() const { return comm_; }
   bool distributed() const { return comm_->size() > 1; }
 
-  // From a set every rank holds in full (a new run's particles, a restart's snapshot): keeps
-  // this rank's share of a decomposition with equal weight per particle (a collective).
+  // Keeps this rank's share of a decomposition with equal weight per particle (a collective),
+  // from a set every rank holds in full (a restart's snapshot, a scene built whole) or from
+  // each rank's slice of the build (buildParticles with ranks). Which of the two it is, the
+  // ranks tell by comparing their counts and first and last ids: a whole set is the same on
+  // every rank, slices are not.
   void keepShare(ParticleSet& p);
   // Sends particles that left this rank's key range to their owners, after new splitters when
   // the cost is out of balance or a particle left the decomposition's box (a collective).

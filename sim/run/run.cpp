@@ -412,7 +412,8 @@ RunOutcome runScene(const Scene& scene, const RunOptions& baseOptions) {
   if (options.configure) options.configure(scene, options);
   const int threads = resolveThreads(options.threads);
   MaterialTable materials = MaterialTable::fromScene(scene);
-  ParticleSet particles = buildParticles(scene, materials);
+  // A distributed run builds each rank's slice only (unless its flaws need the whole body).
+  ParticleSet particles = buildParticles(scene, materials, options.ranks.get());
   Simulation sim(scene, std::move(particles), std::move(materials), threads, options.ranks);
   for (const auto& package : options.packages) sim.addPackage(package);
   return runSimulation(sim, options);

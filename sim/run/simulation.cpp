@@ -82,7 +82,8 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
       materials_(std::move(materials)),
       boundaries_(scene_.geometry, scene_.domain),
       ws_(scene_.sph, scene_.geometry) {
-  if (p_.numReal == 0) throw SimulationError("scene '" + scene_.name + "' has no particles");
+  if (domain_.comm().sum(p_.numReal) == 0)
+    throw SimulationError("scene '" + scene_.name + "' has no particles");
   // A particle with 30x the neighbours its kernel should hold (the volume of the support in
   // particle volumes: 2 kappa eta, pi (kappa eta)^2, 4/3 pi (kappa eta)^3) has an h that stopped
   // tracking its density (the seed's dh/dt or constant h in a strong expansion); its pair loop
@@ -98,6 +99,7 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
   for (const BodySpec& b : scene_.bodies) spacingMin = std::min(spacingMin, b.spacing);
   if (scene_.bodies.empty())
     for (std::size_t i = 0; i < p_.numReal; ++i) spacingMin = std::min(spacingMin, p_.h[i]);
+  spacingMin = domain_.comm().minimum(spacingMin);  // the same threshold on every rank
   hMin_ = scene_.sph.hMinFactor * scene_.sph.eta * spacingMin;
   for (std::size_t i = 0; i < p_.numReal; ++i)
     if (p_.material[i] < 0 || static_cast<std::size_t>(p_.material[i]) >= materials_.size())
@@ -144,7 +146,8 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
   if (scene_.sph.density != DensityMethod::Continuity) leapfrog_.hold("density");
   if (scene_.sph.smoothingLength != SmoothingLengthMethod::Seed) leapfrog_.hold("smoothing_length");
   // A distributed run: the flaws are drawn from the whole body (each rank keeps the table, found
-  // by particle id, so flaws travel with their particle), then each rank keeps its share.
+  // by particle id, so flaws travel with their particle; such scenes are built whole on every
+  // rank, bodies.hpp), then each rank keeps its share.
   if (domain_.distributed()) {
     if (fracture_) fracture_->distributeFlaws(p_, materials_);
     domain_.keepShare(p_);

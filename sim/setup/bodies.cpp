@@ -1,5 +1,6 @@
 #include "sim/setup/bodies.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -169,8 +170,19 @@ double initialSpecificEnergy(const BodySpec& body, const MaterialTable& material
   }
 }
 
-void fillBody(const Scene& scene, const MaterialTable& materials, std::size_t index,
-              ParticleSet& p) {
+// Which of the scene's particles (numbered in build order, all bodies together) a build keeps:
+// those in [begin, end); `next` is the number of the next one found. The particles outside are
+// counted, not stored.
+struct BuildRange {
+  std::size_t next = 0;
+  std::size_t begin = 0;
+  std::size_t end = std::numeric_limits<std::size_t>::max();
+};
+
+// Appends the particles of body `index` that fall in `range` (every one by default), their ids
+// their numbers in build order. Returns how many the body has in all.
+std::size_t fillBody(const Scene& scene, const MaterialTable& materials, std::size_t index,
+                     ParticleSet& p, BuildRange& range) {
   const BodySpec& body = scene.bodies[index];
   const int dim = spatialDimension(scene.geometry);
   const bool rz = (scene.geometry == Geometry::Axisymmetric);
@@ -180,7 +192,7 @@ void fillBody(const Scene& scene, const MaterialTable& materials, std::size_t in
   const double cell = latticeCellVolume(body.lattice, dim, body.spacing);
   const double h = scene.sph.eta * std::pow(cell, 1.0 / dim);
   const double u = initialSpecificEnergy(body, materials, context);
-  const std::size_t before = p.size();
+  const std::size_t before = range.next;
 
   auto visit = [&](const Point& x) {
     if (!insideShape(body.shape, x, dim) || !insideDomain(scene, x, dim)) return;
@@ -190,15 +202,19 @@ void fillBody(const Scene& scene, const MaterialTable& materials, std::size_t in
       if (v.firstCarved <= index && insideVoid(v, x, dim)) return;  // so does an earlier void
     // RZ: each particle is a ring of radius r; planar 2D: per metre depth; 1D: per m^2.
     const double mass = body.density * cell * (rz ? 2.0 * std::numbers::pi * x[0] : 1.0);
+    const std::size_t number = range.next++;
+    if (number < range.begin || number >= range.end) return;
     p.append(x, body.velocity, mass, body.density, u, h, body.material);
+    p.id[p.size() - 1] = static_cast<std::int64_t>(number);
   };
   forEachLatticePoint(body.lattice, dim, body.spacing, latticeOrigin(scene, body.shape, dim),
                       bodyBounds(scene, body.shape, dim), context, visit);
-  if (p.size() == before)
+  if (range.next == before)
     throw SceneError(context +
                      ": produces no particles (the shape is outside the domain, "
                      "covered by earlier bodies or voids, or smaller than the spacing " +
                      formatQuantity(body.spacing, Dimension::Length) + ")");
+  return range.next - before;
 }
 
 double distanceSquared(const Point& a, const Point& b, int dim) {
@@ -332,19 +348,29 @@ bool insideVoid(const VoidSpec& v, const std::array<double, 3>& x, int dimension
   return v.isBowl ? insideBowl(v.bowl, x, dimension) : insideShape(v.shape, x, dimension);
 }
 
-ParticleSet buildParticles(const Scene& scene, const MaterialTable& materials) {
+ParticleSet buildParticles(const Scene& scene, const MaterialTable& materials,
+                           const Communicator* ranks) {
   ParticleSet p;
+  BuildRange range;
+  const bool share = ranks && ranks->size() > 1 && !needsWholeBody(materials);
+  if (share) {
+    // This rank's slice of the build order; the counting pass stores nothing.
+    const std::size_t total = static_cast<std::size_t>(bodyFirstIds(scene, materials).back());
+    const std::size_t r = static_cast<std::size_t>(ranks->rank()), n = static_cast<std::size_t>(ranks->size());
+    range.begin = total / n * r + total % n * r / n;
+    range.end = total / n * (r + 1) + total % n * (r + 1) / n;
+  }
   std::vector<std::size_t> firstOfBody;
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
-    firstOfBody.push_back(p.size());
-    fillBody(scene, materials, b, p);
+    firstOfBody.push_back(range.next);
+    fillBody(scene, materials, b, p, range);
   }
-  firstOfBody.push_back(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) p.id[i] = static_cast<std::int64_t>(i);
+  firstOfBody.push_back(range.next);
   p.numReal = p.size();
   // Delayed deposits (time > 0) are the simulation's to fire (Simulation::step).
   for (std::size_t k = 0; k < scene.deposits.size(); ++k)
-    if (!(scene.deposits[k].time > 0.0)) applyDeposit(scene, k, firstIds(firstOfBody), p, 0.0);
+    if (!(scene.deposits[k].time > 0.0))
+      applyDeposit(scene, k, firstIds(firstOfBody), p, 0.0, share ? ranks : nullptr);
   assignLightingTimes(scene.detonations, scene.geometry, materials, p);
   // Solid state exists only when a material needs it ("model no more than the scene asks").
   if (materials.anyStrength())
@@ -353,9 +379,12 @@ ParticleSet buildParticles(const Scene& scene, const MaterialTable& materials) {
   for (const BodySpec& b : scene.bodies) damaged = damaged || b.damage > 0.0;
   if (materials.anyFracture() || damaged) {
     p.enableFracture();
-    for (std::size_t b = 0; b < scene.bodies.size(); ++b)
-      for (std::size_t i = firstOfBody[b]; i < firstOfBody[b + 1]; ++i)
-        p.crack[i] = std::cbrt(scene.bodies[b].damage);
+    for (std::size_t i = 0; i < p.numReal; ++i) {
+      const auto id = static_cast<std::size_t>(p.id[i]);
+      const std::size_t b = static_cast<std::size_t>(
+          std::upper_bound(firstOfBody.begin(), firstOfBody.end(), id) - firstOfBody.begin()) - 1;
+      p.crack[i] = std::cbrt(scene.bodies[b].damage);
+    }
   }
   return p;
 }
@@ -365,14 +394,22 @@ ParticleSet buildParticles(const Scene& scene, const MaterialTable& materials) {
 namespace ejecta {
 
 std::vector<std::int64_t> bodyFirstIds(const Scene& scene, const MaterialTable& materials) {
-  ParticleSet p;
+  ParticleSet none;
+  BuildRange count;
+  count.end = 0;  // count every body's particles, keep none
   std::vector<std::int64_t> first;
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
-    first.push_back(static_cast<std::int64_t>(p.size()));
-    fillBody(scene, materials, b, p);
+    first.push_back(static_cast<std::int64_t>(count.next));
+    fillBody(scene, materials, b, none, count);
   }
-  first.push_back(static_cast<std::int64_t>(p.size()));
+  first.push_back(static_cast<std::int64_t>(count.next));
   return first;
+}
+
+bool needsWholeBody(const MaterialTable& materials) {
+  for (std::size_t m = 0; m < materials.size(); ++m)
+    if (materials[m].fracture.kind == FractureKind::GradyKipp) return true;
+  return false;
 }
 
 }  // namespace ejecta

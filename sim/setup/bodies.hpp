@@ -17,7 +17,15 @@ namespace ejecta {
 // adds the energy deposits with time 0 (the delayed ones are Simulation's to fire). Ids run
 // 0..n-1; numReal = n. Throws SceneError for a body without particles or a deposit that covers
 // none.
-ParticleSet buildParticles(const Scene& scene, const MaterialTable& materials);
+// With `ranks` of more than one rank (a collective), each rank builds only its slice of the
+// build order, about n / ranks particles with their ids, so no rank ever holds the whole set; the
+// deposits are summed over the ranks. Scenes whose flaws are drawn from the whole body
+// (needsWholeBody) are built whole on every rank instead.
+ParticleSet buildParticles(const Scene& scene, const MaterialTable& materials,
+                           const Communicator* ranks = nullptr);
+// Grady-Kipp flaws are distributed over every particle of a material at t = 0 (sim/solid/
+// solid_state.hpp): such scenes are built whole.
+bool needsWholeBody(const MaterialTable& materials);
 
 // The particle ids of each body as buildParticles assigns them: body b holds the ids
 // [first[b], first[b + 1]). Ids travel with the particles, so a body is found again after any

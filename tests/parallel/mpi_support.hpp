@@ -34,10 +34,11 @@ inline void sortById(ParticleSet& p) {
   p.permute(order);
 }
 
-// Runs `scene` to its t_end on `ranks` (one thread each), without files.
-inline RankedRun runOn(const Scene& scene, std::shared_ptr<const Communicator> ranks) {
+// Runs `scene` to its t_end on `ranks` (one thread each), without files. `whole`: every rank
+// builds the whole scene (as a restart reads a whole snapshot) rather than its slice.
+inline RankedRun runOn(const Scene& scene, std::shared_ptr<const Communicator> ranks, bool whole = false) {
   MaterialTable materials = MaterialTable::fromScene(scene);
-  ParticleSet particles = buildParticles(scene, materials);
+  ParticleSet particles = buildParticles(scene, materials, whole ? nullptr : ranks.get());
   Simulation sim(scene, std::move(particles), std::move(materials), 1, ranks);
   sim.initialise();
   const double tEnd = scene.time.tEnd;
