@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <stdexcept>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -252,10 +253,17 @@ void requireClass(hid_t type, const std::string& label) {
                              ")");
 }
 
-// Reads dataset `path` that must have shape (n) or, for vector3, (n, 3).
+// Rows [first, first + count) of a dataset with n rows.
+struct RowRange {
+  std::size_t first = 0;
+  std::size_t count = 0;
+};
+
+// Reads dataset `path` that must have shape (n) or, for vector3, (n, columns): all of it, or the
+// rows `rows` when given (a hyperslab: a distributed restart reads each rank's slice only).
 template <typename T>
 std::vector<T> readDataset(hid_t file, const std::string& path, std::size_t n, bool vector3,
-                           hsize_t columns = 3) {
+                           hsize_t columns = 3, std::optional<RowRange> rows = std::nullopt) {
   const Hid dset = openDataset(file, path);
   const std::vector<hsize_t> dims = datasetShape(dset.get(), path);
   const std::vector<hsize_t> expected =
@@ -265,10 +273,23 @@ std::vector<T> readDataset(hid_t file, const std::string& path, std::size_t n, b
                              ", expected " + shapeText(expected));
   const Hid type = checked(H5Dget_type(dset.get()), H5Tclose, "cannot get type of '" + path + "'");
   requireClass<T>(type.get(), "dataset '" + path + "'");
-  std::vector<T> values(vector3 ? columns * n : n);
-  if (!values.empty())
+  const RowRange range = rows ? *rows : RowRange{0, n};
+  std::vector<T> values(vector3 ? columns * range.count : range.count);
+  if (values.empty()) return values;
+  if (!rows) {
     check(H5Dread(dset.get(), H5Type<T>::memory(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
           "cannot read dataset '" + path + "'");
+    return values;
+  }
+  const Hid file_space = checked(H5Dget_space(dset.get()), H5Sclose, "cannot get dataspace of '" + path + "'");
+  const hsize_t start[2] = {range.first, 0};
+  const hsize_t count[2] = {range.count, columns};
+  check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
+        "cannot select rows of '" + path + "'");
+  const Hid memory = checked(H5Screate_simple(vector3 ? 2 : 1, count, nullptr), H5Sclose,
+                             "cannot make a dataspace for '" + path + "'");
+  check(H5Dread(dset.get(), H5Type<T>::memory(), memory.get(), file_space.get(), H5P_DEFAULT, values.data()),
+        "cannot read dataset '" + path + "'");
   return values;
 }
 

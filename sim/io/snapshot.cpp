@@ -152,23 +152,27 @@ std::string groupPath(FieldOutput output) {
   return output == FieldOutput::Particles ? "/particles" : "/restart";
 }
 
-// Reads field f (a stored one) from `path`, shape (n) or (n, components).
-void readField(hid_t file, const std::string& path, ParticleSet& p, const Field& f, std::size_t n) {
+// Reads field f (a stored one) from `path`, shape (n) or (n, components): rows `range` of it.
+void readField(hid_t file, const std::string& path, ParticleSet& p, const Field& f, std::size_t n,
+               RowRange range) {
   switch (f.storage.kind) {
-    case FieldStorage::Kind::Int32: p.*f.storage.int32 = readDataset<int>(file, path, n, false); return;
-    case FieldStorage::Kind::Int64: p.*f.storage.int64 = readDataset<std::int64_t>(file, path, n, false); return;
+    case FieldStorage::Kind::Int32: p.*f.storage.int32 = readDataset<int>(file, path, n, false, 3, range); return;
+    case FieldStorage::Kind::Int64:
+      p.*f.storage.int64 = readDataset<std::int64_t>(file, path, n, false, 3, range);
+      return;
     default: break;
   }
   const int columns = f.spec.components;
   if (columns == 1) {
-    p.column(f, 0) = readDataset<double>(file, path, n, false);
+    p.column(f, 0) = readDataset<double>(file, path, n, false, 3, range);
     return;
   }
-  const std::vector<double> rows = readDataset<double>(file, path, n, true, static_cast<hsize_t>(columns));
+  const std::vector<double> rows =
+      readDataset<double>(file, path, n, true, static_cast<hsize_t>(columns), range);
   for (int c = 0; c < columns; ++c) {
     std::vector<double>& column = p.column(f, c);
-    column.resize(n);
-    for (std::size_t i = 0; i < n; ++i) column[i] = rows[columns * i + c];
+    column.resize(range.count);
+    for (std::size_t i = 0; i < range.count; ++i) column[i] = rows[columns * i + c];
   }
 }
 
@@ -190,7 +194,7 @@ std::vector<std::string> datasetNames(hid_t file, const std::string& path) {
 // shape (n) or (n, k) in /particles or /restart that is not a carried field, declared with its
 // stored units and description so the package that owns it finds its values when it declares
 // it again (ParticleSet::declare keeps them).
-void readPackageFields(hid_t file, ParticleSet& p, std::size_t n) {
+void readPackageFields(hid_t file, ParticleSet& p, std::size_t n, RowRange range) {
   std::vector<std::string> builtin;
   for (const Field& f : allBuiltinFields()) builtin.push_back(f.spec.name);
   for (const FieldOutput output : {FieldOutput::Particles, FieldOutput::Restart}) {
@@ -209,13 +213,17 @@ void readPackageFields(hid_t file, ParticleSet& p, std::size_t n) {
       spec.components = dims.size() == 2 ? static_cast<int>(dims[1]) : 1;
       spec.output = output;
       p.declare(spec);
-      readField(file, path, p, *p.field(name), n);
+      readField(file, path, p, *p.field(name), n, range);
     }
   }
 }
 
-ParticleSet readParticles(hid_t file) {
+// Slice `part` of `parts` equal slices of the stored rows.
+ParticleSet readParticles(hid_t file, int part, int parts) {
   const std::size_t n = particleCount(file);
+  const std::size_t k = static_cast<std::size_t>(part), m = static_cast<std::size_t>(parts);
+  const std::size_t first = n / m * k + n % m * k / m;
+  const RowRange range{first, n / m * (k + 1) + n % m * (k + 1) / m - first};
   ParticleSet p;
   // The optional groups a snapshot carries, each known by one of its datasets.
   if (linkExists(file, "/particles/stress")) {
@@ -230,15 +238,15 @@ ParticleSet readParticles(hid_t file) {
   if (linkExists(file, "/restart/crack")) p.enableFracture();
   if (linkExists(file, "/restart/lighting_time")) p.enableBurn();
   if (linkExists(file, "/particles/viscosity_alpha")) p.enableViscositySwitch(0.0);
-  p.resize(n);  // zeroes everything, omega = 1
-  p.numReal = n;
+  p.resize(range.count);  // zeroes everything, omega = 1
+  p.numReal = range.count;
   for (const Field& f : p.fields()) {
     if (f.spec.output == FieldOutput::None || f.spec.derive) continue;
     const std::string path = groupPath(f.spec.output) + "/" + f.spec.name;
     if (!f.spec.required && !linkExists(file, path)) continue;
-    readField(file, path, p, f, n);
+    readField(file, path, p, f, n, range);
   }
-  readPackageFields(file, p, n);
+  readPackageFields(file, p, n, range);
   return p;
 }
 
@@ -256,6 +264,10 @@ void writeSnapshot(const std::string& path, const ParticleSet& p, const Snapshot
 }
 
 ParticleSet readSnapshot(const std::string& path, SnapshotInfo& info) {
+  return readSnapshot(path, info, 0, 1);
+}
+
+ParticleSet readSnapshot(const std::string& path, SnapshotInfo& info, int part, int parts) {
   try {
     // Checked first so the common mistake gets a plain message rather than HDF5's.
     if (!std::filesystem::exists(path)) throw std::runtime_error("no such file");
@@ -265,7 +277,7 @@ ParticleSet readSnapshot(const std::string& path, SnapshotInfo& info) {
     SnapshotInfo read;
     readRootAttributes(file.get(), read);
     readRestartAttributes(file.get(), read);
-    ParticleSet p = readParticles(file.get());
+    ParticleSet p = readParticles(file.get(), part, parts);
     info = std::move(read);
     return p;
   } catch (const std::exception& e) {

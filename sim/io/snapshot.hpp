@@ -49,5 +49,8 @@ void writeSnapshot(const std::string& path, const ParticleSet& p, const Snapshot
 // restored when the file has them. Throws std::runtime_error naming the file and the missing
 // or malformed dataset/attribute.
 ParticleSet readSnapshot(const std::string& path, SnapshotInfo& info);
+// Slice `part` of `parts` near-equal slices of the stored particles (rows in file order): what
+// each rank of a distributed restart reads, so that no rank holds them all.
+ParticleSet readSnapshot(const std::string& path, SnapshotInfo& info, int part, int parts);
 
 }  // namespace ejecta

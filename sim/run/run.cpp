@@ -443,7 +443,10 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
             [&](const fs::path& a, const fs::path& b) { return index(a) < index(b); });
 
   SnapshotInfo info;
-  ParticleSet particles = readSnapshot(files.back().string(), info);
+  // A distributed restart: each rank reads its slice of the rows (Simulation then decomposes).
+  const int part = baseOptions.ranks ? baseOptions.ranks->rank() : 0;
+  const int parts = baseOptions.ranks ? baseOptions.ranks->size() : 1;
+  ParticleSet particles = readSnapshot(files.back().string(), info, part, parts);
   RunOptions options = baseOptions;
   options.outDir = runDir;
   // The scene as the run was started: its text and --set overrides travel in the snapshot.
@@ -459,7 +462,8 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
   // The packages' declarations say which of their fields the XDMF lists (a snapshot stores the
   // values, not the declaration).
   for (const auto& package : options.packages) package->registerFields(particles);
-  for (const fs::path& f : files) {
+  // The series so far, for rank 0's XDMF (the other ranks write none).
+  for (const fs::path& f : root ? files : std::vector<fs::path>{}) {
     SnapshotInfo earlier;
     ParticleSet q = f == files.back() ? ParticleSet{} : readSnapshot(f.string(), earlier);
     if (f != files.back())
