@@ -186,6 +186,7 @@ struct RankReport {
   double collectiveSeconds = 0.0;  // in all-gathers and reductions during the steps
   double exchangeBytes = 0.0;      // sent to other ranks during the steps
   double exchangeCalls = 0.0;
+  double collectiveCalls = 0.0;
   double haloBuildSeconds = 0.0;   // replayed
   double haloRefreshSeconds = 0.0; // replayed
   double rebalanceSeconds = 0.0;   // replayed: a full rebalance (new splitters, migration)
@@ -259,6 +260,7 @@ RankReport measure(const Scene& scene, int steps, int threads,
   r.exchangeBytes = comm->exchanges().bytesSent;
   r.exchangeCalls = static_cast<double>(comm->exchanges().calls);
   r.collectiveSeconds = comm->collectives().seconds;
+  r.collectiveCalls = static_cast<double>(comm->collectives().calls);
   r.owned = static_cast<double>(sim.particles().numReal);
   r.haloReceived = static_cast<double>(sim.domain().halos().received());
   r.haloSent = static_cast<double>(sim.domain().halos().sent());
@@ -320,8 +322,8 @@ void printReport(const Scene& scene, const Options& o, std::size_t particles, in
               exchange, 100.0 * exchange / perStep,
               largest(reports, &RankReport::exchangeCalls) / steps,
               largest(reports, &RankReport::exchangeBytes) / steps / 1e6);
-  std::printf("    all-gathers and reductions                  %.3f s (%.1f%%)\n", collectives,
-              100.0 * collectives / perStep);
+  std::printf("    all-gathers and reductions                  %.3f s (%.1f%%), %.1f calls\n", collectives,
+              100.0 * collectives / perStep, largest(reports, &RankReport::collectiveCalls) / steps);
   if (ranks > 1) {
     const double build = largest(reports, &RankReport::haloBuildSeconds);
     const double refresh = largest(reports, &RankReport::haloRefreshSeconds);
@@ -339,6 +341,16 @@ void printReport(const Scene& scene, const Options& o, std::size_t particles, in
                 largest(reports, &RankReport::haloReceived),
                 100.0 * total(reports, &RankReport::haloReceived) / total(reports, &RankReport::owned),
                 total(reports, &RankReport::owned) / ranks);
+  }
+  if (ranks > 1) {
+    // A rank that waits long in the collectives is waiting for a slower one.
+    std::printf("  per rank: owned, halo received, compute / exchanges / collectives per step [s]\n");
+    for (int r = 0; r < ranks; ++r) {
+      const RankReport& k = reports[static_cast<std::size_t>(r)];
+      const double ex = k.exchangeSeconds / steps, co = k.collectiveSeconds / steps;
+      std::printf("    rank %d: %.0f, %.0f, %.3f / %.3f / %.3f\n", r, k.owned, k.haloReceived,
+                  k.stepSeconds / steps - ex - co, ex, co);
+    }
   }
   std::printf("| scene | ranks x threads | N | steps | wall/step [s] | updates/s/core | compute | exchange | collectives |\n");
   std::printf("| %s | %d x %d | %zu | %d | %.3f | %.4g | %.3f | %.3f | %.3f |\n", scene.name.c_str(), ranks,
