@@ -342,20 +342,25 @@ double secondsPerBoxTest() {
     const double lo = static_cast<double>(b) / kBoxes;
     boxes[b] = {lo, lo, lo, lo + 0.1, lo + 0.1, lo + 0.1};
   }
+  // The fastest of a few repeats: the machine is shared, and the least disturbed run is the
+  // closest to the cost on a dedicated core.
+  double fastest = std::numeric_limits<double>::max();
   std::size_t selected = 0;
-  const auto start = Clock::now();
-  for (const auto& box : boxes)
-    for (const auto& q : x) {
-      double d2 = 0.0;
-      for (std::size_t a = 0; a < 3; ++a) {
-        const double out = q[a] < box[a] ? box[a] - q[a] : q[a] > box[a + 3] ? q[a] - box[a + 3] : 0.0;
-        d2 += out * out;
+  for (int repeat = 0; repeat < 5; ++repeat) {
+    const auto start = Clock::now();
+    for (const auto& box : boxes)
+      for (const auto& q : x) {
+        double d2 = 0.0;
+        for (std::size_t a = 0; a < 3; ++a) {
+          const double out = q[a] < box[a] ? box[a] - q[a] : q[a] > box[a + 3] ? q[a] - box[a + 3] : 0.0;
+          d2 += out * out;
+        }
+        selected += std::sqrt(d2) < 0.05;
       }
-      selected += std::sqrt(d2) < 0.05;
-    }
-  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  if (selected == kPoints * kBoxes + 1) std::printf(" ");  // keeps the loop from being elided
-  return seconds / static_cast<double>(kPoints * kBoxes);
+    fastest = std::min(fastest, std::chrono::duration<double>(Clock::now() - start).count());
+  }
+  if (selected == 0) std::printf(" ");  // uses the count, so the loop is not elided
+  return fastest / static_cast<double>(kPoints * kBoxes);
 }
 
 struct Summary {
