@@ -109,14 +109,14 @@ class AllRanksHere final : public Communicator {
   void sumInPlace(std::span<std::uint64_t>) const override {}
   void minInPlace(std::span<double>) const override {}
   void maxInPlace(std::span<double>) const override {}
-  std::vector<Bytes> allGather(std::span<const std::byte>) const override { return unused(); }
-  std::vector<Bytes> exchange(const std::vector<Bytes>&) const override { return unused(); }
-  std::vector<Bytes> gatherToRoot(std::span<const std::byte>) const override { return unused(); }
-  std::shared_ptr<const Communicator> split(int) const override { return nullptr; }
+  std::vector<Bytes> allGather(std::span<const std::byte>) const override { unused(); }
+  std::vector<Bytes> exchange(const std::vector<Bytes>&) const override { unused(); }
+  std::vector<Bytes> gatherToRoot(std::span<const std::byte>) const override { unused(); }
+  std::shared_ptr<const Communicator> split(int) const override { unused(); }
 
  private:
-  static std::vector<Bytes> unused() {
-    throw std::logic_error("the decomposition model moves no particles");
+  [[noreturn]] static void unused() {
+    throw std::logic_error("the decomposition model moves no particles between ranks");
   }
   int ranks_;
 };

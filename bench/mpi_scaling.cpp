@@ -179,9 +179,11 @@ Scene benchScene(const Options& o) {
 
 // What one rank measured, as plain doubles so that rank 0 can gather them.
 struct RankReport {
+  double particles = 0.0;          // of the whole run
+  double setupSeconds = 0.0;       // particles, decomposition, initialise()
   double stepSeconds = 0.0;        // all timed steps
-  double rebalanceStepSeconds = 0; // the steps that rebalanced (step index % 16 == 0)
-  double rebalanceSteps = 0;
+  double rebalanceStepSeconds = 0.0;  // the steps that rebalanced (step index % 16 == 0)
+  double rebalanceSteps = 0.0;
   double exchangeSeconds = 0.0;    // in exchange() during the steps
   double collectiveSeconds = 0.0;  // in all-gathers and reductions during the steps
   double exchangeBytes = 0.0;      // sent to other ranks during the steps
@@ -233,17 +235,16 @@ void replayDistributedPhases(Simulation& sim, const std::shared_ptr<const Commun
 }
 
 RankReport measure(const Scene& scene, int steps, int threads,
-                   const std::shared_ptr<const TimedCommunicator>& comm, std::size_t& particles,
-                   double& setupSeconds) {
+                   const std::shared_ptr<const TimedCommunicator>& comm) {
+  RankReport r;
   const auto setupStart = Clock::now();
   MaterialTable materials = MaterialTable::fromScene(scene);
   ParticleSet all = buildParticles(scene, materials);
-  particles = all.numReal;
+  r.particles = static_cast<double>(all.numReal);
   Simulation sim(scene, std::move(all), std::move(materials), threads, comm);
   sim.initialise();
-  setupSeconds = secondsSince(setupStart);
+  r.setupSeconds = secondsSince(setupStart);
 
-  RankReport r;
   comm->reset();
   for (int s = 0; s < steps; ++s) {
     const bool rebalances = sim.stepCount() % kRebalanceInterval == 0;
@@ -283,6 +284,14 @@ double largest(const std::vector<RankReport>& reports, Member member) {
   return top;
 }
 
+// The slowest rank's time outside the collectives.
+double largestCompute(const std::vector<RankReport>& reports) {
+  double top = 0.0;
+  for (const RankReport& r : reports)
+    top = std::max(top, r.stepSeconds - r.exchangeSeconds - r.collectiveSeconds);
+  return top;
+}
+
 template <typename Member>
 double total(const std::vector<RankReport>& reports, Member member) {
   double sum = 0.0;
@@ -290,16 +299,17 @@ double total(const std::vector<RankReport>& reports, Member member) {
   return sum;
 }
 
-void printReport(const Scene& scene, const Options& o, std::size_t particles, int threads,
-                 double setupSeconds, const std::vector<RankReport>& reports) {
+void printReport(const Scene& scene, const Options& o, int threads,
+                 const std::vector<RankReport>& reports) {
   const int ranks = static_cast<int>(reports.size());
   const double steps = o.steps;
+  const double particles = reports.front().particles;
   const double perStep = largest(reports, &RankReport::stepSeconds) / steps;
   const double exchange = largest(reports, &RankReport::exchangeSeconds) / steps;
   const double collectives = largest(reports, &RankReport::collectiveSeconds) / steps;
-  const double compute = perStep - exchange - collectives;
+  const double compute = largestCompute(reports) / steps;
   const double cores = static_cast<double>(ranks) * threads;
-  const double updatesPerCore = static_cast<double>(particles) / perStep / cores;
+  const double updatesPerCore = particles / perStep / cores;
   const double rebalanceSteps = reports.front().rebalanceSteps;
   const double ordinarySteps = steps - rebalanceSteps;
   const double ordinary =
@@ -307,9 +317,10 @@ void printReport(const Scene& scene, const Options& o, std::size_t particles, in
                            largest(reports, &RankReport::rebalanceStepSeconds)) / ordinarySteps
                         : 0.0;
 
-  std::printf("Distributed scaling: %s, %d rank(s) x %d thread(s), %zu particles, %d steps\n",
+  std::printf("Distributed scaling: %s, %d rank(s) x %d thread(s), %.0f particles, %d steps\n",
               scene.name.c_str(), ranks, threads, particles, o.steps);
-  std::printf("  setup (particles, decomposition, initialise)  %.2f s\n", setupSeconds);
+  std::printf("  setup (particles, decomposition, initialise)  %.2f s\n",
+              largest(reports, &RankReport::setupSeconds));
   std::printf("  wall per step                                 %.3f s\n", perStep);
   if (rebalanceSteps > 0 && ordinarySteps > 0)
     std::printf("    steps that sort and rebalance: %.3f s, the others %.3f s\n",
@@ -353,7 +364,7 @@ void printReport(const Scene& scene, const Options& o, std::size_t particles, in
     }
   }
   std::printf("| scene | ranks x threads | N | steps | wall/step [s] | updates/s/core | compute | exchange | collectives |\n");
-  std::printf("| %s | %d x %d | %zu | %d | %.3f | %.4g | %.3f | %.3f | %.3f |\n", scene.name.c_str(), ranks,
+  std::printf("| %s | %d x %d | %.0f | %d | %.3f | %.4g | %.3f | %.3f | %.3f |\n", scene.name.c_str(), ranks,
               threads, particles, o.steps, perStep, updatesPerCore, compute, exchange, collectives);
 }
 
@@ -367,11 +378,9 @@ int main(int argc, char** argv) {
     const std::shared_ptr<const Communicator> world = worldCommunicator();
     const auto timed = std::make_shared<const TimedCommunicator>(world);
     const int threads = resolveThreads(o.threads);
-    std::size_t particles = 0;
-    double setupSeconds = 0.0;
-    const RankReport mine = measure(scene, o.steps, threads, timed, particles, setupSeconds);
+    const RankReport mine = measure(scene, o.steps, threads, timed);
     const std::vector<RankReport> reports = gatherReports(mine, *world);
-    if (world->isRoot()) printReport(scene, o, particles, threads, setupSeconds, reports);
+    if (world->isRoot()) printReport(scene, o, threads, reports);
     return 0;
   } catch (const std::exception& e) {  // a bad scene, or a SimulationError on some rank
     std::fprintf(stderr, "ejecta_bench_mpi_scaling: %s\n", e.what());
