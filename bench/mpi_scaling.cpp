@@ -4,22 +4,22 @@
 //
 //   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1   # as root only
 //   OMP_NUM_THREADS=2 mpirun --oversubscribe --bind-to none -np 1
-//       build/bench/ejecta_bench_mpi_scaling --scene sedov --n-side 100 --steps 4 --threads 2
+//       build/bench/ejecta_bench_mpi_scaling --scene sedov --n-side 100 --steps 5 --threads 2
 //   OMP_NUM_THREADS=1 mpirun --oversubscribe --bind-to none -np 2
-//       build/bench/ejecta_bench_mpi_scaling --scene sedov --n-side 100 --steps 4 --threads 1
-//   (each command on one line)
-//   (the same with --scene impact [--spacing 1] for scenes/impact_3d_oblique.toml)
+//       build/bench/ejecta_bench_mpi_scaling --scene sedov --n-side 100 --steps 5 --threads 1
+//   and the same two with --scene impact --steps 10 (scenes/impact_3d_oblique.toml, 179,952
+//   particles). Each command is one line; on 2 cores the Sedov pair takes about a minute.
 //
 // --bind-to none matters for the 1 x 2 layout: Open MPI binds each of up to two ranks to one core
 // by default, which would put both threads of the single rank on the same core.
 //
 //   ejecta_bench_mpi_scaling [--scene sedov|impact] [--n-side K] [--spacing S] [--set key=value ...]
-//                            [--steps 4] [--threads T]
+//                            [--steps 5] [--threads T] [--exact-halo]
 //
 // Scenes: sedov is scenes/verification/sedov_3d.toml with spacing 1/K (K^3 particles; K = 100 is
 // N = 1e6); impact is scenes/impact_3d_oblique.toml at its spacing or --spacing S for its three
-// bodies. Only the steps are timed, not building the particles, the decomposition or
-// initialise().
+// bodies. The steps are timed apart from the setup (building the particles, the decomposition
+// and initialise()), which is reported on its own line.
 //
 // The split is measured from outside the simulation, which exposes no phase timers:
 //   - every collective goes through a timing wrapper of the communicator, so "exchange" is the
@@ -30,14 +30,20 @@
 //   - after the steps, the halo build and refresh, a full rebalance and an output gather are
 //     replayed on a copy of this rank's particles and timed alone (these include the selection
 //     and packing that the wrapper counts as compute).
-// Each time is the largest over ranks (the step waits for the slowest).
+// Each time is the largest over ranks (the step waits for the slowest). --exact-halo also counts,
+// after the steps, how many of the halo's real particles a particle of the receiving rank
+// actually reaches (it gathers every rank's positions everywhere).
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "bench/arguments.hpp"
@@ -101,7 +107,7 @@ class TimedCommunicator final : public Communicator {
     return timedCall(exchanges_, bytes, [&] { return inner_->exchange(toRank); });
   }
   std::vector<Bytes> gatherToRoot(std::span<const std::byte> mine) const override {
-    return timedCall(gathers_, mine.size(), [&] { return inner_->gatherToRoot(mine); });
+    return timedCall(collectives_, mine.size(), [&] { return inner_->gatherToRoot(mine); });
   }
   void sumInPlace(std::span<std::uint64_t> values) const override {
     timedCall(collectives_, values.size_bytes(), [&] { inner_->sumInPlace(values); return 0; });
@@ -118,13 +124,12 @@ class TimedCommunicator final : public Communicator {
 
   const CallTally& exchanges() const { return exchanges_; }
   const CallTally& collectives() const { return collectives_; }
-  const CallTally& gathers() const { return gathers_; }
-  void reset() const { exchanges_ = collectives_ = gathers_ = CallTally{}; }
+  void reset() { exchanges_ = collectives_ = CallTally{}; }
 
  private:
   std::shared_ptr<const Communicator> inner_;
   // The interface's collectives are const; the tallies are the wrapper's own bookkeeping.
-  mutable CallTally exchanges_, collectives_, gathers_;
+  mutable CallTally exchanges_, collectives_;
 };
 
 struct Options {
@@ -132,8 +137,9 @@ struct Options {
   int nSide = 100;                     // sedov: particles per axis
   double spacing = 0.0;                // impact: 0 keeps the scene's
   std::vector<std::string> overrides;  // --set
-  int steps = 4;
+  int steps = 5;
   int threads = 0;
+  bool exactHalo = false;  // also count the halo exact neighbour lists would need
 };
 
 Options parseOptions(int argc, char** argv) {
@@ -147,6 +153,7 @@ Options parseOptions(int argc, char** argv) {
     else if (arg == "--set") o.overrides.push_back(next());
     else if (arg == "--steps") o.steps = std::atoi(next());
     else if (arg == "--threads") o.threads = std::atoi(next());
+    else if (arg == "--exact-halo") o.exactHalo = true;
     else { std::fprintf(stderr, "unknown option %s\n", arg.c_str()); std::exit(2); }
   }
   if ((o.scene != "sedov" && o.scene != "impact") || o.nSide < 2 || o.steps < 1) {
@@ -196,6 +203,8 @@ struct RankReport {
   double owned = 0.0;
   double haloReceived = 0.0;
   double haloSent = 0.0;
+  double boxHalo = 0.0;    // other ranks' real particles the box criterion sends here
+  double exactHalo = 0.0;  // those of them within reach of a particle of this rank
 };
 
 // This rank's particles as the step left them, without the halos (real particles and this rank's
@@ -234,8 +243,75 @@ void replayDistributedPhases(Simulation& sim, const std::shared_ptr<const Commun
   report.gatherSeconds = secondsSince(start);
 }
 
-RankReport measure(const Scene& scene, int steps, int threads,
-                   const std::shared_ptr<const TimedCommunicator>& comm) {
+// How many of the other ranks' real particles the box criterion of halo_exchange.cpp sends to
+// this rank, and how many of them a particle here actually reaches (within the halo reach of
+// max(h_i, h_j)): what a halo from exact neighbour lists would hold. Every rank's positions are
+// gathered everywhere, so this is a measurement only.
+void countRealHalos(const ParticleSet& p, const Communicator& comm, RankReport& report) {
+  struct Point {
+    double x, y, z, h;
+  };
+  std::vector<Point> mine(p.numReal);
+  for (std::size_t i = 0; i < p.numReal; ++i) mine[i] = {p.x[0][i], p.x[1][i], p.x[2][i], p.h[i]};
+  Bytes bytes;
+  appendBytes(bytes, mine.data(), mine.size());
+  const std::vector<Bytes> all = comm.allGather(bytes);
+
+  std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  double hMine = 0.0, hAll = 0.0;
+  for (const Point& q : mine) {
+    lo = {std::min(lo[0], q.x), std::min(lo[1], q.y), std::min(lo[2], q.z)};
+    hi = {std::max(hi[0], q.x), std::max(hi[1], q.y), std::max(hi[2], q.z)};
+    hMine = std::max(hMine, q.h);
+  }
+  for (const Bytes& b : all)
+    for (const Point& q : fromBytes<Point>(b)) hAll = std::max(hAll, q.h);
+  // This rank's particles binned in cubes of the largest reach: a reaching pair is in
+  // neighbouring cubes.
+  const double cell = kHaloSupportFactor * hAll;
+  auto cellOf = [&](double x, std::size_t a) { return static_cast<std::int64_t>(std::floor((x - lo[a]) / cell)); };
+  auto cellKey = [](std::int64_t i, std::int64_t j, std::int64_t k) {
+    return (static_cast<std::uint64_t>(i + (1 << 20)) << 42) | (static_cast<std::uint64_t>(j + (1 << 20)) << 21) |
+           static_cast<std::uint64_t>(k + (1 << 20));
+  };
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells;
+  for (std::size_t i = 0; i < mine.size(); ++i)
+    cells[cellKey(cellOf(mine[i].x, 0), cellOf(mine[i].y, 1), cellOf(mine[i].z, 2))].push_back(i);
+
+  for (std::size_t r = 0; r < all.size(); ++r) {
+    if (static_cast<int>(r) == comm.rank()) continue;
+    for (const Point& q : fromBytes<Point>(all[r])) {
+      const std::array<double, 3> x{q.x, q.y, q.z};
+      double d2 = 0.0;
+      for (std::size_t a = 0; a < 3; ++a) {
+        const double out = x[a] < lo[a] ? lo[a] - x[a] : x[a] > hi[a] ? x[a] - hi[a] : 0.0;
+        d2 += out * out;
+      }
+      if (std::sqrt(d2) >= kHaloSupportFactor * std::max(hMine, q.h)) continue;
+      ++report.boxHalo;
+      const std::int64_t ci = cellOf(q.x, 0), cj = cellOf(q.y, 1), ck = cellOf(q.z, 2);
+      bool reached = false;
+      for (std::int64_t di = -1; di <= 1 && !reached; ++di)
+        for (std::int64_t dj = -1; dj <= 1 && !reached; ++dj)
+          for (std::int64_t dk = -1; dk <= 1 && !reached; ++dk) {
+            const auto found = cells.find(cellKey(ci + di, cj + dj, ck + dk));
+            if (found == cells.end()) continue;
+            for (std::size_t i : found->second) {
+              const double dx = mine[i].x - q.x, dy = mine[i].y - q.y, dz = mine[i].z - q.z;
+              const double reach = kHaloSupportFactor * std::max(mine[i].h, q.h);
+              if (dx * dx + dy * dy + dz * dz < reach * reach) {
+                reached = true;
+                break;
+              }
+            }
+          }
+      report.exactHalo += reached ? 1.0 : 0.0;
+    }
+  }
+}
+
+RankReport measure(const Scene& scene, int steps, int threads, bool exactHalo,
+                   const std::shared_ptr<TimedCommunicator>& comm) {
   RankReport r;
   const auto setupStart = Clock::now();
   MaterialTable materials = MaterialTable::fromScene(scene);
@@ -266,6 +342,7 @@ RankReport measure(const Scene& scene, int steps, int threads,
   r.haloReceived = static_cast<double>(sim.domain().halos().received());
   r.haloSent = static_cast<double>(sim.domain().halos().sent());
   replayDistributedPhases(sim, comm, r);
+  if (exactHalo && comm->size() > 1) countRealHalos(sim.particles(), *comm, r);
   return r;
 }
 
@@ -353,6 +430,10 @@ void printReport(const Scene& scene, const Options& o, int threads,
                 100.0 * total(reports, &RankReport::haloReceived) / total(reports, &RankReport::owned),
                 total(reports, &RankReport::owned) / ranks);
   }
+  if (o.exactHalo && ranks > 1)
+    std::printf("  real particles of other ranks per rank: box criterion %.0f, within reach %.0f (box / exact %.2f)\n",
+                total(reports, &RankReport::boxHalo) / ranks, total(reports, &RankReport::exactHalo) / ranks,
+                total(reports, &RankReport::boxHalo) / total(reports, &RankReport::exactHalo));
   if (ranks > 1) {
     // A rank that waits long in the collectives is waiting for a slower one.
     std::printf("  per rank: owned, halo received, compute / exchanges / collectives per step [s]\n");
@@ -376,9 +457,9 @@ int main(int argc, char** argv) {
     const Options o = parseOptions(argc, argv);
     const Scene scene = benchScene(o);
     const std::shared_ptr<const Communicator> world = worldCommunicator();
-    const auto timed = std::make_shared<const TimedCommunicator>(world);
+    const auto timed = std::make_shared<TimedCommunicator>(world);
     const int threads = resolveThreads(o.threads);
-    const RankReport mine = measure(scene, o.steps, threads, timed);
+    const RankReport mine = measure(scene, o.steps, threads, o.exactHalo, timed);
     const std::vector<RankReport> reports = gatherReports(mine, *world);
     if (world->isRoot()) printReport(scene, o, threads, reports);
     return 0;
