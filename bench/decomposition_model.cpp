@@ -111,6 +111,8 @@ class AllRanksHere final : public Communicator {
   void maxInPlace(std::span<double>) const override {}
   std::vector<Bytes> allGather(std::span<const std::byte>) const override { unused(); }
   std::vector<Bytes> exchange(const std::vector<Bytes>&) const override { unused(); }
+  std::vector<Bytes> exchangeWith(std::span<const int>, const std::vector<Bytes>&,
+                                  std::span<const int>) const override { unused(); }
   std::vector<Bytes> gatherToRoot(std::span<const std::byte>) const override { unused(); }
   std::shared_ptr<const Communicator> split(int) const override { unused(); }
 

@@ -23,7 +23,8 @@
 //
 // The split is measured from outside the simulation, which exposes no phase timers:
 //   - every collective goes through a timing wrapper of the communicator, so "exchange" is the
-//     time in personalised all-to-alls (halo build and refresh, particle migration) and
+//     time in personalised exchanges (halo build and refresh between neighbours, particle
+//     migration) and
 //     "collectives" the time in all-gathers and reductions (rank extents, time step, health
 //     check, load balance), both including the wait for the slowest rank;
 //   - "compute" is the rest of the step;
@@ -105,6 +106,12 @@ class TimedCommunicator final : public Communicator {
     for (std::size_t r = 0; r < toRank.size(); ++r)
       if (static_cast<int>(r) != rank()) bytes += toRank[r].size();
     return timedCall(exchanges_, bytes, [&] { return inner_->exchange(toRank); });
+  }
+  std::vector<Bytes> exchangeWith(std::span<const int> to, const std::vector<Bytes>& payloads,
+                                  std::span<const int> from) const override {
+    std::size_t bytes = 0;
+    for (const Bytes& b : payloads) bytes += b.size();
+    return timedCall(exchanges_, bytes, [&] { return inner_->exchangeWith(to, payloads, from); });
   }
   std::vector<Bytes> gatherToRoot(std::span<const std::byte> mine) const override {
     return timedCall(collectives_, mine.size(), [&] { return inner_->gatherToRoot(mine); });
