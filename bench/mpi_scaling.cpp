@@ -21,7 +21,8 @@
 // bodies. The steps are timed apart from the setup (building the particles, the decomposition
 // and initialise()), which is reported on its own line.
 //
-// The split is measured from outside the simulation, which exposes no phase timers:
+// The split is measured from outside the simulation, besides the two timers DistributedDomain
+// keeps (DomainStats: halo exchange and rebalancing):
 //   - every collective goes through a timing wrapper of the communicator, so "exchange" is the
 //     time in personalised exchanges (halo build and refresh between neighbours, particle
 //     migration) and
@@ -203,6 +204,8 @@ struct RankReport {
   double exchangeBytes = 0.0;      // sent to other ranks during the steps
   double exchangeCalls = 0.0;
   double collectiveCalls = 0.0;
+  double haloSeconds = 0.0;        // in the halo build and refreshes during the steps (DomainStats)
+  double rebalancingSeconds = 0.0; // in rebalancing during the steps (DomainStats)
   double haloBuildSeconds = 0.0;   // replayed
   double haloRefreshSeconds = 0.0; // replayed
   double rebalanceSeconds = 0.0;   // replayed: a full rebalance (new splitters, migration)
@@ -329,6 +332,7 @@ RankReport measure(const Scene& scene, int steps, int threads, bool exactHalo,
   r.setupSeconds = secondsSince(setupStart);
 
   comm->reset();
+  const DomainStats before = sim.domain().stats();
   for (int s = 0; s < steps; ++s) {
     const bool rebalances = sim.stepCount() % kRebalanceInterval == 0;
     const auto start = Clock::now();
@@ -340,6 +344,8 @@ RankReport measure(const Scene& scene, int steps, int threads, bool exactHalo,
       ++r.rebalanceSteps;
     }
   }
+  r.haloSeconds = sim.domain().stats().haloSeconds - before.haloSeconds;
+  r.rebalancingSeconds = sim.domain().stats().rebalanceSeconds - before.rebalanceSeconds;
   r.exchangeSeconds = comm->exchanges().seconds;
   r.exchangeBytes = comm->exchanges().bytesSent;
   r.exchangeCalls = static_cast<double>(comm->exchanges().calls);
@@ -420,6 +426,12 @@ void printReport(const Scene& scene, const Options& o, int threads,
   std::printf("    all-gathers and reductions                  %.3f s (%.1f%%), %.1f calls\n", collectives,
               100.0 * collectives / perStep, largest(reports, &RankReport::collectiveCalls) / steps);
   if (ranks > 1) {
+    const double halo = largest(reports, &RankReport::haloSeconds) / steps;
+    const double rebalancing = largest(reports, &RankReport::rebalancingSeconds) / steps;
+    std::printf("  the domain's own timers (DomainStats, slowest rank):\n");
+    std::printf("    halo build and refreshes                    %.3f s (%.1f%%)\n", halo, 100.0 * halo / perStep);
+    std::printf("    rebalancing                                 %.3f s (%.1f%%)\n", rebalancing,
+                100.0 * rebalancing / perStep);
     const double build = largest(reports, &RankReport::haloBuildSeconds);
     const double refresh = largest(reports, &RankReport::haloRefreshSeconds);
     const double rebalance = largest(reports, &RankReport::rebalanceSeconds);
