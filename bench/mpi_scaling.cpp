@@ -33,8 +33,8 @@
 //     replayed on a copy of this rank's particles and timed alone (these include the selection
 //     and packing that the wrapper counts as compute).
 // Each time is the largest over ranks (the step waits for the slowest). --exact-halo also counts,
-// after the steps, how many of the halo's real particles a particle of the receiving rank
-// actually reaches (it gathers every rank's positions everywhere).
+// after the steps, how many real particles of other ranks a particle of each rank actually
+// reaches, the least halo possible (it gathers every rank's positions everywhere).
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -213,7 +213,7 @@ struct RankReport {
   double owned = 0.0;
   double haloReceived = 0.0;
   double haloSent = 0.0;
-  double boxHalo = 0.0;    // other ranks' real particles the box criterion sends here
+  double boxHalo = 0.0;    // other ranks' real particles near this rank's one box
   double exactHalo = 0.0;  // those of them within reach of a particle of this rank
 };
 
@@ -253,9 +253,10 @@ void replayDistributedPhases(Simulation& sim, const std::shared_ptr<const Commun
   report.gatherSeconds = secondsSince(start);
 }
 
-// How many of the other ranks' real particles the box criterion of halo_exchange.cpp sends to
-// this rank, and how many of them a particle here actually reaches (within the halo reach of
-// max(h_i, h_j)): what a halo from exact neighbour lists would hold. Every rank's positions are
+// How many of the other ranks' real particles lie within reach of the one box around this rank's
+// particles (the halo criterion of the first version, 8132fe1), and how many of them a particle
+// here actually reaches (within the halo reach of max(h_i, h_j)): what a halo from exact
+// neighbour lists would hold, to set beside the halo received. Every rank's positions are
 // gathered everywhere, so this is a measurement only.
 void countRealHalos(const ParticleSet& p, const Communicator& comm, RankReport& report) {
   struct Point {
@@ -450,7 +451,8 @@ void printReport(const Scene& scene, const Options& o, int threads,
                 total(reports, &RankReport::owned) / ranks);
   }
   if (o.exactHalo && ranks > 1)
-    std::printf("  real particles of other ranks per rank: box criterion %.0f, within reach %.0f (box / exact %.2f)\n",
+    std::printf("  real particles of other ranks per rank: near the one box around the rank's particles (the "
+                "first version's criterion) %.0f, within reach of a particle %.0f (one box / exact %.2f)\n",
                 total(reports, &RankReport::boxHalo) / ranks, total(reports, &RankReport::exactHalo) / ranks,
                 total(reports, &RankReport::boxHalo) / total(reports, &RankReport::exactHalo));
   if (ranks > 1) {
