@@ -31,7 +31,6 @@
 #include <exception>
 #include <limits>
 #include <memory>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -413,9 +412,9 @@ RecordBytes haloRecord(const std::string& scenePath, const std::vector<std::stri
   return r;
 }
 
-// Seconds per particle-and-rank test of the halo selection: HaloExchange::build tests each of
-// its particles against every other rank's box (distanceToBox, with its square root), so the
-// selection grows as (local particles) x (ranks) whatever the halo's size.
+// Seconds per particle-and-box test of the halo selection (a distance to a box, with its square
+// root). The first version's HaloExchange::build made (local particles) x (ranks - 1) of them
+// whatever the halo's size; today's makes them only near its partners' boxes.
 double secondsPerBoxTest() {
   constexpr std::size_t kPoints = 1 << 16, kBoxes = 64;
   std::vector<std::array<double, 3>> x(kPoints);
