@@ -326,9 +326,10 @@ RankReport measure(const Scene& scene, int steps, int threads, bool exactHalo,
   RankReport r;
   const auto setupStart = Clock::now();
   MaterialTable materials = MaterialTable::fromScene(scene);
-  ParticleSet all = buildParticles(scene, materials);
-  r.particles = static_cast<double>(all.numReal);
-  Simulation sim(scene, std::move(all), std::move(materials), threads, comm);
+  // As runScene builds a distributed run: each rank its slice (whole where flaws need it).
+  ParticleSet particles = buildParticles(scene, materials, comm.get());
+  Simulation sim(scene, std::move(particles), std::move(materials), threads, comm);
+  r.particles = static_cast<double>(sim.totalParticles());
   sim.initialise();
   r.setupSeconds = secondsSince(setupStart);
 
