@@ -52,8 +52,10 @@ namespace {
 constexpr double kEta = 1.2;
 constexpr double kReach = kKernelSupport * 1.1 * kEta;  // in lattice spacings
 // Bytes of the extent every rank all-gathers at each halo build (RankExtent in halo_exchange.cpp:
-// two boxes of six doubles, two reaches, a count and 64 boxes).
-constexpr double kRankExtentBytes = 48 + 8 + 48 + 8 + 8 + 64 * 48;
+// two boxes of six doubles and two reaches), and of the occupied cells' boxes (up to 64 of six
+// doubles) a rank then sends to each partner.
+constexpr double kRankExtentBytes = 48 + 8 + 48 + 8;
+constexpr double kPartnerBoxBytes = 64 * 48;
 // Lattice layers beyond a box that the reach can touch.
 constexpr int kReachLayers = static_cast<int>(kReach);
 
@@ -535,13 +537,15 @@ int main(int argc, char** argv) try {
       }
       {
         // Today: a size and then the data to each partner per exchange, every rank's extent
-        // (64 boxes) all-gathered at each build, and the selection testing only the particles in
-        // cells near a partner's boxes (estimated as one pass over the particles plus a few
-        // tests per particle sent).
+        // all-gathered at each build and its 64 boxes sent to its partners (one more
+        // point-to-point exchange), and the selection testing only the particles in cells near
+        // a partner's boxes (estimated as one pass over the particles plus a few tests per
+        // particle sent).
         const Summary halo = summarise(cellBoxes.halo);
         const double bytes = halo.max * bytesPerHalo;
         const double tComm = partnerCount.max * exchangesPerStep * 2 * o.latency + bytes / o.bandwidth;
-        const double tExtents = (ranks - 1) * kRankExtentBytes / o.bandwidth + std::log2(ranks) * o.latency;
+        const double tExtents = (ranks - 1) * kRankExtentBytes / o.bandwidth + std::log2(ranks) * o.latency +
+                                partnerCount.max * (kPartnerBoxBytes / o.bandwidth + 2 * o.latency);
         const double tSelect = (owned.max + 4.0 * halo.max) * boxTest;
         std::snprintf(row, sizeof row,
                       "| %.3g | %d | %.0f | %.0f | %.0f | %.2f | %s | %.1f | %.0f | %.2f | %.4g | %.3g | %.3f | %.3g | %.3g | %.3f |",

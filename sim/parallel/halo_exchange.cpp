@@ -46,19 +46,18 @@ double distance(const Box& a, const Box& b, int dimension) {
 
 constexpr int kMaxBoxes = 64;
 
-// What each rank tells the others about itself (fixed size, for one all-gather).
+// What each rank tells every other about itself (fixed size, for one all-gather): enough to
+// decide who talks to whom. The boxes then go to the partners only.
 struct RankExtent {
   Box local;           // around every particle it may send: real ones and its ghosts
   double sendReach;    // the largest k h among those
   Box cover;           // around its real particles
   double reach;        // R: the largest k h among its real particles
-  int boxes;           // how many of `box` are used
-  std::array<Box, kMaxBoxes> box;  // the tight boxes of its real particles' occupied cells
 };
 
-// Bins the real particles into a grid of about 64 cells over their box and keeps each occupied
-// cell's tight box.
-void coverBoxes(const ParticleSet& p, int dimension, RankExtent& e) {
+// The tight boxes of a rank's real particles' occupied cells, a grid of about 64 cells over
+// their box.
+std::vector<Box> coverBoxes(const ParticleSet& p, int dimension, const RankExtent& e) {
   const int side = dimension == 1 ? 64 : dimension == 2 ? 8 : 4;
   std::array<Box, kMaxBoxes> cells{};
   for (std::size_t i = 0; i < p.numReal; ++i) {
@@ -71,9 +70,10 @@ void coverBoxes(const ParticleSet& p, int dimension, RankExtent& e) {
     }
     cells[static_cast<std::size_t>(cell)].add(p, i);
   }
-  e.boxes = 0;
+  std::vector<Box> occupied;
   for (const Box& b : cells)
-    if (!b.empty()) e.box[static_cast<std::size_t>(e.boxes++)] = b;
+    if (!b.empty()) occupied.push_back(b);
+  return occupied;
 }
 
 // Does rank `from` perhaps hold particles that rank `to` needs? Both ranks evaluate this from
@@ -162,7 +162,6 @@ void HaloExchange::build(ParticleSet& p, int dimension, double supportFactor, co
       mine.reach = std::max(mine.reach, supportFactor * p.h[i]);
     }
   }
-  coverBoxes(p, dimension, mine);
   Bytes bytes;
   appendBytes(bytes, &mine, 1);
   std::vector<RankExtent> extents;
@@ -177,14 +176,20 @@ void HaloExchange::build(ParticleSet& p, int dimension, double supportFactor, co
     if (mayNeed(mine, them, dimension)) sendRanks_.push_back(r);
     if (mayNeed(them, mine, dimension)) recvRanks_.push_back(r);
   }
+  // My boxes to the ranks that send to me (they choose what to send by them); theirs from the
+  // ranks I send to.
+  const std::vector<Box> myBoxes = coverBoxes(p, dimension, mine);
+  Bytes boxBytes;
+  appendBytes(boxBytes, myBoxes.data(), myBoxes.size());
+  const std::vector<Bytes> theirBoxes =
+      comm.exchangeWith(recvRanks_, std::vector<Bytes>(recvRanks_.size(), boxBytes), sendRanks_);
   sendTo_.assign(sendRanks_.size(), {});
   if (!sendRanks_.empty()) {
     const Buckets buckets(p, local, mine.local, mine.sendReach, dimension);
     std::vector<int> marked(local, -1);  // the last send rank a particle was chosen for
     for (std::size_t s = 0; s < sendRanks_.size(); ++s) {
       const RankExtent& them = extents[static_cast<std::size_t>(sendRanks_[s])];
-      for (int k = 0; k < them.boxes; ++k) {
-        const Box& box = them.box[static_cast<std::size_t>(k)];
+      for (const Box& box : fromBytes<Box>(theirBoxes[s])) {
         buckets.near(box, std::max(them.reach, mine.sendReach), [&](std::size_t j) {
           if (marked[j] == static_cast<int>(s)) return;
           const double x[3] = {p.x[0][j], p.x[1][j], p.x[2][j]};
