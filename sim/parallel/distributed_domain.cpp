@@ -33,7 +33,7 @@ DistributedDomain::DistributedDomain(std::shared_ptr<const Communicator> comm, i
       dimension_(dimension),
       options_(options) {}
 
-void DistributedDomain::keepShare(ParticleSet& p) {
+void DistributedDomain::keepShare(ParticleSet& p, const CostFunction& cost) {
   if (!distributed()) return;
   const Stopwatch watch(stats_.rebalanceSeconds);
   p.clearGhosts();
@@ -42,8 +42,9 @@ void DistributedDomain::keepShare(ParticleSet& p) {
   std::vector<double> hi = lo;
   comm_->minInPlace(lo);
   comm_->maxInPlace(hi);
+  auto costs = [&] { return cost ? cost(p) : std::vector<std::uint64_t>(p.numReal, 1); };
   if (lo != hi) {  // slices already: lay the curve over them
-    decompose(p, std::vector<std::uint64_t>(p.numReal, 1));
+    decompose(p, costs());
     return;
   }
   // Every rank holds the same particles: each keeps a contiguous slice of them first, so the
@@ -55,8 +56,7 @@ void DistributedDomain::keepShare(ParticleSet& p) {
   std::iota(slice.begin(), slice.end(), begin);
   p.permute(slice);
   p.numReal = slice.size();
-  const std::vector<std::uint64_t> equal(p.numReal, 1);
-  decompose(p, equal);
+  decompose(p, costs());
 }
 
 void DistributedDomain::decompose(ParticleSet& p, std::span<const std::uint64_t> cost) {

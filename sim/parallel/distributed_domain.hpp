@@ -5,6 +5,7 @@
 // one-rank code path is the serial one, bit for bit (docs/parallel.md).
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -41,12 +42,14 @@ class DistributedDomain {
   std::shared_ptr<const Communicator> shared() const { return comm_; }
   bool distributed() const { return comm_->size() > 1; }
 
-  // Keeps this rank's share of a decomposition with equal weight per particle (a collective),
+  // Keeps this rank's share of a decomposition weighted by `cost` (a collective; equal weights
+  // when not given), 
   // from a set every rank holds in full (a restart's snapshot, a scene built whole) or from
   // each rank's slice of the build (buildParticles with ranks). Which of the two it is, the
   // ranks tell by comparing their counts and first and last ids: a whole set is the same on
   // every rank, slices are not.
-  void keepShare(ParticleSet& p);
+  using CostFunction = std::function<std::vector<std::uint64_t>(const ParticleSet&)>;
+  void keepShare(ParticleSet& p, const CostFunction& cost = {});
   // Sends particles that left this rank's key range to their owners, after new splitters when
   // the cost is out of balance or a particle left the decomposition's box (a collective).
   // `cost[i]` is real particle i's measured work.
