@@ -1,6 +1,6 @@
 // Distributed strong scaling: one scene stepped on R MPI ranks x T OpenMP threads, with the
 // step's time split into compute, communication, halo exchange, rebalancing and output gathering.
-// Run once per layout and compare the wall time per step (bench/RESULTS_mpi.md):
+// Run once per layout and compare the wall time per step (docs/parallel.md, "Speed and scale"):
 //
 //   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1   # as root only
 //   OMP_NUM_THREADS=2 mpirun --oversubscribe --bind-to none -np 1
