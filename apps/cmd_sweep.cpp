@@ -143,9 +143,15 @@ std::vector<int> runVariantsOnRanks(const Communicator& world, const SweepArgs& 
       const RunOutcome r = runScene(loadScene(args.scene, all), options);
       status[k] = r.ok ? 0 : 2;
       outcome = r.ok ? "completed" : "failed: " + r.error;
-    } catch (const std::exception& e) {  // the same error on every rank of the group
+    } catch (const SceneError& e) {  // a bad scene: raised alike on every rank of the group
       status[k] = 1;
       outcome = std::string("error: ") + e.what();
+    } catch (const std::exception& e) {
+      // Another error (a file rank 0 cannot write) may be on one rank only, with the others in
+      // a collective of this variant: the next variant's collectives would pair with theirs.
+      std::fprintf(stderr, "ejecta: sweep: variant %zu: %s\n", k, e.what());
+      MpiSession::abortAll(1);
+      throw;
     }
     if (ranks->isRoot()) {
       std::ofstream log(dirOf(k) / "run.log");

@@ -267,6 +267,21 @@ ParticleSet readSnapshot(const std::string& path, SnapshotInfo& info) {
   return readSnapshot(path, info, 0, 1);
 }
 
+SnapshotInfo readSnapshotInfo(const std::string& path) {
+  try {
+    if (!std::filesystem::exists(path)) throw std::runtime_error("no such file");
+    const QuietHdf5Errors quiet;
+    const Hid file = checked(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose,
+                             "cannot open as HDF5");
+    SnapshotInfo info;
+    readRootAttributes(file.get(), info);
+    readRestartAttributes(file.get(), info);
+    return info;
+  } catch (const std::exception& e) {
+    throw std::runtime_error("snapshot '" + path + "': " + e.what());
+  }
+}
+
 ParticleSet readSnapshot(const std::string& path, SnapshotInfo& info, int part, int parts) {
   try {
     // Checked first so the common mistake gets a plain message rather than HDF5's.

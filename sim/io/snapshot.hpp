@@ -52,5 +52,7 @@ ParticleSet readSnapshot(const std::string& path, SnapshotInfo& info);
 // Slice `part` of `parts` near-equal slices of the stored particles (rows in file order): what
 // each rank of a distributed restart reads, so that no rank holds them all.
 ParticleSet readSnapshot(const std::string& path, SnapshotInfo& info, int part, int parts);
+// The snapshot's info (time, step, stored scene...) without its particles.
+SnapshotInfo readSnapshotInfo(const std::string& path);
 
 }  // namespace ejecta

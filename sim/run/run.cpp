@@ -388,6 +388,9 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
   addToSummary(outcome.ledger, s);
   outcome.gauges = outputs.gaugePulses();
   addToSummary(outcome.gauges, s);
+  // The hooks read every rank's particles at rank 0: gathered afresh (a restart already at
+  // t_end has written nothing, and so gathered nothing).
+  if (options.onFinish && sim.ranks().size() > 1) sim.collectParticles();
   if (options.onFinish && root) options.onFinish(sim, s);
   if (outputs.enabled())
     writeSummaryJson((fs::path(options.outDir) / "summary.json").string(), s);
@@ -443,10 +446,21 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
             [&](const fs::path& a, const fs::path& b) { return index(a) < index(b); });
 
   SnapshotInfo info;
-  // A distributed restart: each rank reads its slice of the rows (Simulation then decomposes).
-  const int part = baseOptions.ranks ? baseOptions.ranks->rank() : 0;
-  const int parts = baseOptions.ranks ? baseOptions.ranks->size() : 1;
+  // A distributed restart: each rank reads its slice of the rows (Simulation then decomposes);
+  // scenes whose flaws are drawn from the whole body read it whole, as they are built
+  // (setup/bodies.hpp). Which it is, the stored scene says: every rank reads it first.
+  int part = baseOptions.ranks ? baseOptions.ranks->rank() : 0;
+  int parts = baseOptions.ranks ? baseOptions.ranks->size() : 1;
+  if (parts > 1) {
+    const SnapshotInfo head = readSnapshotInfo(files.back().string());
+    if (needsWholeBody(MaterialTable::fromScene(storedScene(head, files.back().string())))) {
+      part = 0;
+      parts = 1;
+    }
+  }
   ParticleSet particles = readSnapshot(files.back().string(), info, part, parts);
+  const std::size_t storedParticles =
+      parts > 1 ? static_cast<std::size_t>(baseOptions.ranks->sum(particles.numReal)) : particles.numReal;
   RunOptions options = baseOptions;
   options.outDir = runDir;
   // The scene as the run was started: its text and --set overrides travel in the snapshot.
@@ -470,7 +484,8 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
       for (const auto& package : options.packages) package->registerFields(q);
     const double time = f == files.back() ? info.time : earlier.time;
     const ParticleSet& stored = f == files.back() ? particles : q;
-    series.push_back({"snapshots/" + f.filename().string(), time, stored.numReal, scene.geometry,
+    series.push_back({"snapshots/" + f.filename().string(), time,
+                      f == files.back() ? storedParticles : stored.numReal, scene.geometry,
                       xdmfAttributes(stored)});
   }
   outputs.setSeries(series);

@@ -101,11 +101,13 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
     for (std::size_t i = 0; i < p_.numReal; ++i) spacingMin = std::min(spacingMin, p_.h[i]);
   spacingMin = domain_.comm().minimum(spacingMin);  // the same threshold on every rank
   hMin_ = scene_.sph.hMinFactor * scene_.sph.eta * spacingMin;
-  for (std::size_t i = 0; i < p_.numReal; ++i)
+  std::string badMaterial;  // found on one rank, reported on all
+  for (std::size_t i = 0; i < p_.numReal && badMaterial.empty(); ++i)
     if (p_.material[i] < 0 || static_cast<std::size_t>(p_.material[i]) >= materials_.size())
-      throw SimulationError("particle id " + std::to_string(p_.id[i]) +
-                            " has material index " + std::to_string(p_.material[i]) +
-                            " but the scene defines " + std::to_string(materials_.size()));
+      badMaterial = "particle id " + std::to_string(p_.id[i]) + " has material index " +
+                    std::to_string(p_.material[i]) + " but the scene defines " +
+                    std::to_string(materials_.size());
+  stopIfAnyRankFailed(badMaterial);
   // The scene's packages, each only where the scene asks for it (docs/design.md). Their order is
   // the order of their hooks, and it matters to the last bit: the burn fraction scales the
   // pressure before the damage releases tension (P f (1 - D), as the golden snapshots hold), and
@@ -438,7 +440,9 @@ void Simulation::checkHealth(double dt) const {
         worst = i;
         fastest = p_.cs[i] / p_.h[i];
       }
-    const bool mine = p_.numReal > 0 && fastest >= domain_.comm().maximum(p_.numReal > 0 ? fastest : 0.0);
+    // Every rank takes part in the reduction, one without particles too.
+    const double fastestAnywhere = domain_.comm().maximum(fastest);
+    const bool mine = p_.numReal > 0 && fastest >= fastestAnywhere;
     std::ostringstream s;
     s << "time step " << dt << " s fell below dt_min " << dtMin << " s";
     stopIfAnyRankFailed(mine ? failureMessage(worst, s.str()) : std::string());

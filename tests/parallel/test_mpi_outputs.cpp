@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <regex>
 #include <fstream>
 #include <sstream>
 
@@ -161,6 +162,18 @@ TEST_F(MpiOutputs, RestartOnOneRankFewerMatchesAnUninterruptedRun) {
                                              snapshotById(cut / "snapshots" / "snap_0004.h5"));
   EXPECT_LE(d.relative, kTolerance) << d.field;
   EXPECT_LE(csvDifference(root_ / "one_rank" / "energy.csv", cut / "energy.csv"), kTolerance);
+  // The series lists every particle of every snapshot, the one resumed from (read in slices)
+  // included.
+  std::ifstream xdmf(cut / "snapshots.xdmf");
+  std::stringstream text;
+  text << xdmf.rdbuf();
+  const std::string series = text.str();
+  const std::regex dimensions(R"(Dimensions="(\d+))");
+  int entries = 0;
+  for (auto it = std::sregex_iterator(series.begin(), series.end(), dimensions);
+       it != std::sregex_iterator(); ++it, ++entries)
+    EXPECT_EQ((*it)[1].str(), "1600");
+  EXPECT_GT(entries, 0);
   std::printf("[ ranks %d, resumed on %d ] snapshot 4: worst field %s differs by %.2e\n",
               world()->size(), world()->size() - 1, d.field.c_str(), d.relative);
 }
