@@ -267,8 +267,14 @@ ParticleSet readSnapshot(const std::string& path, SnapshotInfo& info) {
   return readSnapshot(path, info, 0, 1);
 }
 
-SnapshotInfo readSnapshotInfo(const std::string& path) {
+namespace {
+
+// Opens snapshot `path` read-only, reads its info and calls read(file, info); every error names
+// the file.
+template <typename Read>
+auto readSnapshotFile(const std::string& path, Read&& read) {
   try {
+    // Checked first so the common mistake gets a plain message rather than HDF5's.
     if (!std::filesystem::exists(path)) throw std::runtime_error("no such file");
     const QuietHdf5Errors quiet;
     const Hid file = checked(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose,
@@ -276,28 +282,24 @@ SnapshotInfo readSnapshotInfo(const std::string& path) {
     SnapshotInfo info;
     readRootAttributes(file.get(), info);
     readRestartAttributes(file.get(), info);
-    return info;
+    return read(file.get(), std::move(info));
   } catch (const std::exception& e) {
     throw std::runtime_error("snapshot '" + path + "': " + e.what());
   }
 }
 
+}  // namespace
+
+SnapshotInfo readSnapshotInfo(const std::string& path) {
+  return readSnapshotFile(path, [](hid_t, SnapshotInfo info) { return info; });
+}
+
 ParticleSet readSnapshot(const std::string& path, SnapshotInfo& info, int part, int parts) {
-  try {
-    // Checked first so the common mistake gets a plain message rather than HDF5's.
-    if (!std::filesystem::exists(path)) throw std::runtime_error("no such file");
-    const QuietHdf5Errors quiet;
-    const Hid file = checked(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose,
-                             "cannot open as HDF5");
-    SnapshotInfo read;
-    readRootAttributes(file.get(), read);
-    readRestartAttributes(file.get(), read);
-    ParticleSet p = readParticles(file.get(), part, parts);
+  return readSnapshotFile(path, [&](hid_t file, SnapshotInfo read) {
+    ParticleSet p = readParticles(file, part, parts);
     info = std::move(read);
     return p;
-  } catch (const std::exception& e) {
-    throw std::runtime_error("snapshot '" + path + "': " + e.what());
-  }
+  });
 }
 
 }  // namespace ejecta
