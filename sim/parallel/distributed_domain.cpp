@@ -65,9 +65,15 @@ void DistributedDomain::decompose(ParticleSet& p, std::span<const std::uint64_t>
   const std::vector<std::uint64_t> keys = hilbertKeys(p, p.numReal, decomposition_.box, dimension_);
   decomposition_.splitters = balancedSplitters(keys, cost, *comm_);
   ++stats_.rebalances;
+  sendToOwners(p, keys);
+}
+
+void DistributedDomain::sendToOwners(ParticleSet& p, std::span<const std::uint64_t> keys) {
   std::vector<int> destination(p.numReal);
-  for (std::size_t i = 0; i < p.numReal; ++i) destination[i] = decomposition_.owner(keys[i]);
-  for (std::size_t i = 0; i < p.numReal; ++i) stats_.migrated += destination[i] != comm_->rank();
+  for (std::size_t i = 0; i < p.numReal; ++i) {
+    destination[i] = decomposition_.owner(keys[i]);
+    stats_.migrated += destination[i] != comm_->rank();
+  }
   migrateParticles(p, destination, *comm_);
 }
 
@@ -93,11 +99,7 @@ void DistributedDomain::rebalance(ParticleSet& p, std::span<const std::uint64_t>
     decompose(p, cost);
     return;
   }
-  const std::vector<std::uint64_t> keys = hilbertKeys(p, p.numReal, decomposition_.box, dimension_);
-  std::vector<int> destination(p.numReal);
-  for (std::size_t i = 0; i < p.numReal; ++i) destination[i] = decomposition_.owner(keys[i]);
-  for (std::size_t i = 0; i < p.numReal; ++i) stats_.migrated += destination[i] != comm_->rank();
-  migrateParticles(p, destination, *comm_);
+  sendToOwners(p, hilbertKeys(p, p.numReal, decomposition_.box, dimension_));
 }
 
 void DistributedDomain::buildHalos(ParticleSet& p, double supportFactor) {

@@ -74,6 +74,8 @@ class DistributedDomain {
 
  private:
   void decompose(ParticleSet& p, std::span<const std::uint64_t> cost);
+  // Migrates every real particle to the owner of its key under the current splitters.
+  void sendToOwners(ParticleSet& p, std::span<const std::uint64_t> keys);
   ParticleSet gatherIndices(const ParticleSet& p, std::span<const std::size_t> indices) const;
 
   std::shared_ptr<const Communicator> comm_;

@@ -18,6 +18,11 @@
 
 namespace ejecta::test {
 
+// A scene of scenes/ (path relative to it) with --set overrides.
+inline Scene sceneFile(const std::string& relative, const std::vector<std::string>& overrides = {}) {
+  return loadScene(std::string(EJECTA_SOURCE_DIR) + "/scenes/" + relative, overrides);
+}
+
 // What a run ends with: on rank 0 every particle, in id order.
 struct RankedRun {
   ParticleSet particles;

@@ -5,9 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include "parallel/mpi_support.hpp"
 #include "sim/parallel/distributed_domain.hpp"
@@ -18,14 +16,8 @@ namespace {
 
 std::shared_ptr<const Communicator> world() { return worldCommunicator(); }
 
-ParticleSet wholeScene(const std::string& relative, const std::vector<std::string>& overrides,
-                       Scene* sceneOut = nullptr) {
-  const std::string path = std::string(EJECTA_SOURCE_DIR) + "/scenes/" + relative;
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  const Scene scene = parseScene(s.str(), relative, overrides);
-  if (sceneOut) *sceneOut = scene;
+ParticleSet wholeScene(const std::string& relative, const std::vector<std::string>& overrides) {
+  const Scene scene = sceneFile(relative, overrides);
   return buildParticles(scene, MaterialTable::fromScene(scene));
 }
 

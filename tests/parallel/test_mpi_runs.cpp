@@ -12,9 +12,6 @@
 // (a missed neighbour moves the density of its particle by ~1e-2).
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "parallel/mpi_support.hpp"
 #include "support/periodic_blast.hpp"
 
@@ -24,18 +21,6 @@ namespace {
 constexpr double kTolerance = 1e-9;
 
 std::shared_ptr<const Communicator> world() { return worldCommunicator(); }
-
-std::string sceneText(const std::string& relative) {
-  const std::string path = std::string(EJECTA_SOURCE_DIR) + "/scenes/" + relative;
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-Scene sceneFile(const std::string& relative, const std::vector<std::string>& overrides) {
-  return parseScene(sceneText(relative), relative, overrides);
-}
 
 // Runs `scene` on one rank and on every rank, and compares them.
 void expectSameAsOneRank(const Scene& scene) {
