@@ -119,6 +119,9 @@ class AllRanksHere final : public Communicator {
   std::vector<Bytes> exchange(const std::vector<Bytes>&) const override { unused(); }
   std::vector<Bytes> exchangeWith(std::span<const int>, const std::vector<Bytes>&,
                                   std::span<const int>) const override { unused(); }
+  std::unique_ptr<PendingExchange> startExchangeWith(std::span<const int>, std::vector<Bytes>,
+                                                     std::span<const int>,
+                                                     std::span<const std::size_t>) const override { unused(); }
   std::vector<Bytes> gatherToRoot(std::span<const std::byte>) const override { unused(); }
   std::shared_ptr<const Communicator> split(int) const override { unused(); }
 

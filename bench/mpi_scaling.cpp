@@ -29,8 +29,8 @@
 //     "collectives" the time in all-gathers and reductions (rank extents, time step, health
 //     check, load balance), both including the wait for the slowest rank;
 //   - "compute" is the rest of the step;
-//   - after the steps, the halo build and refresh, a full rebalance and an output gather are
-//     replayed on a copy of this rank's particles and timed alone (these include the selection
+//   - after the steps, the halo build and refresh, a full rebalance, a snapshot write and a gather
+//     of every particle to rank 0 (what images draw) are replayed and timed alone (these include the selection
 //     and packing that the wrapper counts as compute).
 // Each time is the largest over ranks (the step waits for the slowest). --exact-halo also counts,
 // after the steps, how many real particles of other ranks a particle of each rank actually
@@ -43,12 +43,16 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
+#include <unistd.h>
+
 #include "bench/arguments.hpp"
+#include "sim/io/snapshot.hpp"
 #include "sim/parallel/communicator.hpp"
 #include "sim/parallel/distributed_domain.hpp"
 #include "sim/parallel/halo_exchange.hpp"
@@ -91,6 +95,24 @@ auto timedCall(CallTally& tally, std::size_t bytes, Call&& call) {
   return result;
 }
 
+// A pending exchange whose finish() is timed into `tally`.
+class TimedPending final : public Communicator::PendingExchange {
+ public:
+  TimedPending(std::unique_ptr<Communicator::PendingExchange> inner, CallTally& tally)
+      : inner_(std::move(inner)), tally_(tally) {}
+  std::vector<Bytes> finish() override {
+    const auto start = Clock::now();
+    std::vector<Bytes> arrived = inner_->finish();
+    tally_.seconds += secondsSince(start);
+    return arrived;
+  }
+  void progress() override { inner_->progress(); }
+
+ private:
+  std::unique_ptr<Communicator::PendingExchange> inner_;
+  CallTally& tally_;
+};
+
 // A communicator that forwards every collective to `inner` and tallies the time spent in it.
 // The Simulation holds it as its only view of the ranks, so every message of a step is counted.
 class TimedCommunicator final : public Communicator {
@@ -113,6 +135,18 @@ class TimedCommunicator final : public Communicator {
     std::size_t bytes = 0;
     for (const Bytes& b : payloads) bytes += b.size();
     return timedCall(exchanges_, bytes, [&] { return inner_->exchangeWith(to, payloads, from); });
+  }
+  // A pending exchange counts as an exchange: the time to start it and the time its finish()
+  // waits (what the overlap did not hide).
+  std::unique_ptr<PendingExchange> startExchangeWith(std::span<const int> to, std::vector<Bytes> payloads,
+                                                     std::span<const int> from,
+                                                     std::span<const std::size_t> sizes) const override {
+    std::size_t bytes = 0;
+    for (const Bytes& b : payloads) bytes += b.size();
+    auto pending = timedCall(exchanges_, bytes, [&] {
+      return inner_->startExchangeWith(to, std::move(payloads), from, sizes);
+    });
+    return std::make_unique<TimedPending>(std::move(pending), exchanges_);
   }
   std::vector<Bytes> gatherToRoot(std::span<const std::byte> mine) const override {
     return timedCall(collectives_, mine.size(), [&] { return inner_->gatherToRoot(mine); });
@@ -209,7 +243,8 @@ struct RankReport {
   double haloBuildSeconds = 0.0;   // replayed
   double haloRefreshSeconds = 0.0; // replayed
   double rebalanceSeconds = 0.0;   // replayed: a full rebalance (new splitters, migration)
-  double gatherSeconds = 0.0;      // replayed: an output gather to rank 0
+  double gatherSeconds = 0.0;      // replayed: a gather of every particle to rank 0 (images)
+  double writeSeconds = 0.0;       // replayed: a snapshot written by the ranks in turn
   double owned = 0.0;
   double haloReceived = 0.0;
   double haloSent = 0.0;
@@ -228,7 +263,8 @@ ParticleSet withoutHalos(const ParticleSet& p) {
   return copy;
 }
 
-// The halo build and refresh, a full rebalance and an output gather, each timed alone on a copy.
+// The halo build and refresh, a full rebalance, a snapshot write and a gather to rank 0, each
+// timed alone (the first three on a copy).
 void replayDistributedPhases(Simulation& sim, const std::shared_ptr<const Communicator>& comm,
                              RankReport& report) {
   if (comm->size() == 1) return;  // one rank: none of these phases exists
@@ -249,8 +285,22 @@ void replayDistributedPhases(Simulation& sim, const std::shared_ptr<const Commun
   report.rebalanceSeconds = secondsSince(start);
 
   start = Clock::now();
-  sim.collectParticles();
+  sim.gatheredParticles();
   report.gatherSeconds = secondsSince(start);
+
+  // A snapshot as the run writes one, into a directory of its own that is removed after.
+  const std::string dir = comm->firstMessage(
+      comm->isRoot()
+          ? (std::filesystem::temp_directory_path() / ("ejecta_bench_snapshot_" + std::to_string(::getpid()))).string()
+          : std::string());
+  if (comm->isRoot()) std::filesystem::create_directories(dir);
+  comm->sum(0);  // the directory exists before any rank writes into it
+  SnapshotInfo info;
+  info.geometry = sim.scene().geometry;
+  start = Clock::now();
+  writeSnapshot(dir + "/snap_0000.h5", sim.particles(), info, *comm);
+  report.writeSeconds = secondsSince(start);
+  if (comm->isRoot()) std::filesystem::remove_all(dir);
 }
 
 // How many of the other ranks' real particles lie within reach of the one box around this rank's
@@ -443,7 +493,9 @@ void printReport(const Scene& scene, const Options& o, int threads,
     std::printf("    full rebalance (new splitters, migration)   %.3f s: %.3f s per step at one per %d steps (%.1f%%)\n",
                 rebalance, rebalance / kRebalanceInterval, kRebalanceInterval,
                 100.0 * rebalance / kRebalanceInterval / perStep);
-    std::printf("    output gather to rank 0 (per snapshot)      %.3f s\n",
+    std::printf("    snapshot written by the ranks in turn       %.3f s per output\n",
+                largest(reports, &RankReport::writeSeconds));
+    std::printf("    every particle gathered to rank 0 (images)  %.3f s per drawn output\n",
                 largest(reports, &RankReport::gatherSeconds));
     std::printf("  halo particles received per rank: mean %.0f, max %.0f (%.1f%% of the owned mean %.0f)\n",
                 total(reports, &RankReport::haloReceived) / ranks,

@@ -139,6 +139,9 @@ void addImageOutputs(RunOptions& options, const Scene& scene, bool charts) {
     options.onOutput = [=](const Simulation& sim, const SnapshotInfo& info, bool final) {
       if (previous) previous(sim, info, final);
       if (!final && info.snapshotIndex % im.every != 0) return;
+      // Drawn by rank 0 from every rank's particles (gathered by all).
+      const ParticleSet& all = sim.gatheredParticles();
+      if (!sim.ranks().isRoot()) return;
       if (!*renderer) {
         fs::create_directories(dir / "images");
         *renderer = std::make_unique<render::Renderer>(
@@ -151,7 +154,7 @@ void addImageOutputs(RunOptions& options, const Scene& scene, bool charts) {
         o.cut = im.cut;
         o.cutAt = im.cutAt.value_or(0.0);
         if (im.camera) o.camera = renderCamera(*im.camera);
-        writeParticleImage(**renderer, sim.outputParticles(), geometry, info.time, name, o,
+        writeParticleImage(**renderer, all, geometry, info.time, name, o,
                            render::framePath(dir, field, static_cast<int>(info.snapshotIndex)));
       }
       if (gridFrames && (final || info.snapshotIndex % fieldsEvery == 0))
@@ -163,6 +166,7 @@ void addImageOutputs(RunOptions& options, const Scene& scene, bool charts) {
   const Scene copy = scene;
   options.onFinish = [=](const Simulation& sim, RunSummary& summary) {
     if (previous) previous(sim, summary);
+    if (!sim.ranks().isRoot()) return;
     render::ChartRunner probe;
     if (!probe.chartsAvailable()) {
       summary.extras.push_back({"charts_note", "no charts: " + probe.unavailableReason() +

@@ -150,11 +150,13 @@ ThermalSummary::Pass governingSummary(const Pass& pass, const std::string& outDi
 }
 
 // A pass that failed: a note for the summary and a line on stderr; the run goes on.
-void noteFailure(PassLog& log, const char* atOrFrom, double time, const std::exception& e) {
+// `print`: false on the ranks other than 0 of a distributed run (which know the failure too).
+void noteFailure(PassLog& log, const char* atOrFrom, double time, const std::exception& e,
+                 bool print = true) {
   const std::string what = std::string("thermal pass ") + atOrFrom + " t = " + fixed(time * 1e3, 3) +
                            " ms failed: " + e.what();
   log.notes.push_back(what);
-  std::fprintf(stderr, "ejecta: %s\n", what.c_str());
+  if (print) std::fprintf(stderr, "ejecta: %s\n", what.c_str());
 }
 
 // What every pass needs, fixed for the run.
@@ -169,10 +171,14 @@ struct PassContext {
 };
 
 // Runs the chain on the frames, writes the pass's files and picture, and logs it.
+// Called on every rank alike (the picture's particles are gathered by all); rank 0 runs the
+// chain and writes.
 void finishPass(const PassContext& c, PassLog& log, Pass pass,
                 const std::vector<radiation::PassFrame>& frames, const std::string& sourceJson,
                 const std::string& occluderText, const Simulation& sim,
                 std::optional<double> poseTime) {
+  const ParticleSet& drawn = sim.gatheredParticles();
+  if (!sim.ranks().isRoot()) return;
   const auto start = std::chrono::steady_clock::now();
   try {
     pass.result = radiation::runThermalStudy(*c.study, frames);
@@ -185,7 +191,7 @@ void finishPass(const PassContext& c, PassLog& log, Pass pass,
   if (log.pictures) {
     try {
       if (!log.renderer) log.renderer = std::make_unique<render::Renderer>();
-      writeThermalPicture(*log.renderer, sim.outputParticles(), c.geometry, sim.time(), *c.study, pass.result,
+      writeThermalPicture(*log.renderer, drawn, c.geometry, sim.time(), *c.study, pass.result,
                           c.sceneName + ": hot material and the spacecraft's faces",
                           c.outDir / pass.dir / "crater.png", poseTime);
     } catch (const std::exception& e) {
@@ -202,6 +208,30 @@ void finishPass(const PassContext& c, PassLog& log, Pass pass,
   log.passes.push_back(std::move(pass));
 }
 
+// The emitters of every rank's hot particles, made at rank 0 (a collective; elsewhere none).
+// Only the particles at or above the threshold travel. A bad particle value is thrown on every
+// rank alike, so that the ranks' passes stay in step.
+std::shared_ptr<const radiation::Emitters> sampleEmitters(const PassContext& c, const Simulation& sim,
+                                                          SnapshotEmitterStats& stats) {
+  const double threshold = c.emitterOptions.minTemperature;
+  const ParticleSet hot = sim.gatherParticlesWhere(
+      [threshold](const ParticleSet& p, std::size_t i) { return p.temperature[i] >= threshold; });
+  const std::uint64_t total = sim.totalParticles();
+  radiation::Emitters emitters;
+  std::string error;
+  if (sim.ranks().isRoot()) {
+    try {
+      emitters = emittersFromParticles(hot, c.geometry, c.emitterOptions, &stats);
+      stats.particles = total;
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+  }
+  error = sim.ranks().firstMessage(error);
+  if (!error.empty()) throw std::invalid_argument(error);
+  return std::make_shared<const radiation::Emitters>(std::move(emitters));
+}
+
 // A pass over the material of one output, frozen during the pass.
 // `gridsNow`: this output wrote a grid file; only its surface occludes, as `ejecta thermal --from`
 // the snapshot does.
@@ -213,9 +243,9 @@ void snapshotPass(const PassContext& c, PassLog& log, const Simulation& sim, con
   std::snprintf(dirName, sizeof dirName, "thermal_%04ld", info.snapshotIndex);
   pass.dir = dirName;
   try {
-    const auto emitters = std::make_shared<const radiation::Emitters>(
-        emittersFromParticles(sim.outputParticles(), c.geometry, c.emitterOptions, &pass.stats));
-    const radiation::TriangleMesh* occluder = gridsNow ? log.surface.current(c.occluderOptions) : nullptr;
+    const auto emitters = sampleEmitters(c, sim, pass.stats);
+    const radiation::TriangleMesh* occluder =
+        gridsNow && sim.ranks().isRoot() ? log.surface.current(c.occluderOptions) : nullptr;
     pass.occluderTriangles = occluder ? occluder->triangleCount() : 0;
     const std::vector<radiation::PassFrame> frames(c.study->approach.times().size(),
                                                    {emitters.get(), occluder});
@@ -224,7 +254,7 @@ void snapshotPass(const PassContext& c, PassLog& log, const Simulation& sim, con
         occluderJson(occluder ? &log.surface.meshedFile : nullptr, c.occluderOptions, log.surface.stats);
     finishPass(c, log, std::move(pass), frames, source, occluderText, sim, std::nullopt);
   } catch (const std::exception& e) {
-    noteFailure(log, "at", info.time, e);
+    noteFailure(log, "at", info.time, e, sim.ranks().isRoot());
   }
 }
 
@@ -241,15 +271,16 @@ void advanceEvolvingPasses(const PassContext& c, PassLog& log, const Simulation&
       while (open.emitters.size() < samples.size() &&
              sim.time() >= (open.start + samples[open.emitters.size()]) * (1.0 - 1e-12)) {
         // Every sample time this step reaches, of every open pass, shares its material.
-        if (!now) now = std::make_shared<const radiation::Emitters>(
-                      emittersFromParticles(sim.outputParticles(), c.geometry, c.emitterOptions, &nowStats));
+        if (!now) now = sampleEmitters(c, sim, nowStats);
         if (nowStats.emitters >= open.largest.emitters) open.largest = nowStats;
-        const radiation::TriangleMesh* occluder = log.surface.current(c.occluderOptions);
+        // (The occluder is rank 0's alone, as is the chain it feeds.)
+        const radiation::TriangleMesh* occluder =
+            sim.ranks().isRoot() ? log.surface.current(c.occluderOptions) : nullptr;
         open.emitters.push_back(now);
         open.occluders.push_back(occluder ? log.surface.mesh : nullptr);
       }
     } catch (const std::exception& e) {
-      noteFailure(log, "from", open.start, e);
+      noteFailure(log, "from", open.start, e, sim.ranks().isRoot());
       log.open.erase(log.open.begin() + static_cast<std::ptrdiff_t>(k));
       continue;
     }
@@ -339,16 +370,8 @@ void addThermalOutputs(RunOptions& options, const Scene& scene, bool charts,
 
   auto log = std::make_shared<PassLog>();
   const ThermalOutputOptions wanted = scene.thermal;
-  // Evolving passes sample the material every step, which a distributed run holds in pieces
-  // (its outputs gather it only at output times).
-  if (wanted.evolving && options.ranks && options.ranks->size() > 1)
-    throw SceneError(scene.sourcePath + ":" + std::to_string(scene.thermal.line) +
-                     ": table 'thermal': key 'hot_material': \"evolving\" samples the material "
-                     "every step and runs on one rank; this run has " +
-                     std::to_string(options.ranks->size()) +
-                     " (use \"snapshot\", passes at output times, which a distributed run "
-                     "supports)");
-
+  // Every rank makes the same passes in step (their samples are collectives: sampleEmitters);
+  // rank 0 runs them and writes their files.
   auto previous = options.onOutput;
   options.onOutput = [=](const Simulation& sim, const SnapshotInfo& info, bool final) {
     if (previous) previous(sim, info, final);
@@ -411,6 +434,7 @@ void addThermalOutputs(RunOptions& options, const Scene& scene, bool charts,
   options.onFinish = [=](const Simulation& sim, RunSummary& summary) {
     if (previousFinish) previousFinish(sim, summary);
     if (!log->open.empty()) advanceEvolvingPasses(*context, *log, sim, true);
+    if (!sim.ranks().isRoot()) return;
     ThermalSummary thermal;
     thermal.passes = static_cast<std::int64_t>(log->passes.size());
     std::string notes;

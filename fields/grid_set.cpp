@@ -5,6 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "fields/lattice_merge.hpp"
 #include "fields/revolve.hpp"
 #include "sim/state/particle_fields.hpp"
 
@@ -118,12 +119,15 @@ SparseLattice splatParticles(const ParticleSet& p, const ParticleContext& ctx,
   return splat(src, ptrs, voxel, clip);
 }
 
-GridSet buildGridSet(const ParticleSet& p, const ParticleContext& ctx, const GridRequest& request) {
-  const double voxel = request.voxel > 0.0 ? request.voxel : medianSmoothingLength(p);
+GridSet buildGridSet(const ParticleSet& p, const ParticleContext& ctx, const GridRequest& request,
+                     const Communicator* ranks) {
+  const double voxel = request.voxel > 0.0 ? request.voxel
+                       : ranks               ? medianSmoothingLength(p, *ranks)
+                                             : medianSmoothingLength(p);
   const std::vector<std::string> names = expandGridNames(request.grids, ctx.materialNames);
   GridSet set;
   set.source = ctx.geometry;
-  set.particles = p.numReal;
+  set.particles = ranks ? ranks->sum(p.numReal) : p.numReal;
 
   std::vector<std::vector<double>> values;
   for (const std::string& name : names) {
@@ -150,14 +154,22 @@ GridSet buildGridSet(const ParticleSet& p, const ParticleContext& ctx, const Gri
   }
 
   const std::optional<VoxelBox> clip3 = voxelBox(request, voxel);
+  // Every rank's particles, summed at rank 0 of a distributed run (fields/lattice_merge.hpp),
+  // which alone goes on to the 3D grids.
+  auto splat = [&](const std::optional<VoxelBox>& clip) {
+    return ranks ? splatEveryRank(p, ctx, values, voxel, clip, *ranks)
+                 : splatParticles(p, ctx, values, voxel, clip);
+  };
+  const bool merged = !ranks || ranks->isRoot();
   switch (ctx.geometry) {
     case Geometry::Spatial:
-      set.lattice = splatParticles(p, ctx, values, voxel, clip3);
+      set.lattice = splat(clip3);
       break;
     case Geometry::Planar: {
       std::optional<VoxelBox> clip2 = clip3;
       if (clip2) clip2->lo[2] = clip2->hi[2] = 0;
-      const SparseLattice plane = splatParticles(p, ctx, values, voxel, clip2);
+      const SparseLattice plane = splat(clip2);
+      if (!merged) break;
       const int layers = request.extrude > 0.0
                              ? std::max(1, static_cast<int>(std::lround(request.extrude / voxel)))
                              : 1;
@@ -175,7 +187,8 @@ GridSet buildGridSet(const ParticleSet& p, const ParticleContext& ctx, const Gri
         b.hi = {static_cast<int>(std::ceil(rmax / voxel)) + 1, clip3->hi[1] + 1, 0};
         clip2 = b;
       }
-      const SparseLattice rz = splatParticles(p, ctx, values, voxel, clip2);
+      const SparseLattice rz = splat(clip2);
+      if (!merged) break;
       set.lattice = revolveAboutAxis(rz, clip3);
       break;
     }

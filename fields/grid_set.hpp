@@ -8,6 +8,7 @@
 
 #include "fields/sparse_lattice.hpp"
 #include "fields/splat.hpp"
+#include "sim/parallel/communicator.hpp"
 #include "sim/state/geometry.hpp"
 #include "sim/state/particles.hpp"
 #include "sim/setup/scene.hpp"
@@ -65,7 +66,10 @@ SparseLattice splatParticles(const ParticleSet& p, const ParticleContext& ctx,
                              const std::optional<VoxelBox>& clip = std::nullopt);
 
 // The grids of `request` for the particles. Throws std::invalid_argument for a 1D run, an
-// unknown grid name, or a particle set without particles.
-GridSet buildGridSet(const ParticleSet& p, const ParticleContext& ctx, const GridRequest& request);
+// unknown grid name, or a particle set without particles. With `ranks` (a distributed run, a
+// collective): the grids of every rank's particles, at rank 0 (elsewhere the set's lattice is
+// empty), each rank having splatted its own (fields/lattice_merge.hpp).
+GridSet buildGridSet(const ParticleSet& p, const ParticleContext& ctx, const GridRequest& request,
+                     const Communicator* ranks = nullptr);
 
 }  // namespace ejecta::fields

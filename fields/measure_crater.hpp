@@ -8,8 +8,11 @@
 
 namespace ejecta::fields {
 
-// resolution [m]: lattice spacing and ray step; 0 = half the median smoothing length.
+// resolution [m]: lattice spacing and ray step; 0 = half the median smoothing length. With
+// `ranks` (a collective): the crater of every rank's particles, splatted by each rank and
+// measured at rank 0 (the other ranks return metrics with found = false).
 CraterMetrics measureCrater(const ParticleSet& p, const ParticleContext& ctx,
-                            const CraterSetup& setup, double resolution = 0.0);
+                            const CraterSetup& setup, double resolution = 0.0,
+                            const Communicator* ranks = nullptr);
 
 }  // namespace ejecta::fields

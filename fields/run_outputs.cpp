@@ -40,7 +40,9 @@ void addFieldOutputs(RunOptions& options, const Scene& scene,
     options.onOutput = [=](const Simulation& sim, const SnapshotInfo& info, bool final) {
       if (previous) previous(sim, info, final);
       if (!final && info.snapshotIndex % every != 0) return;
-      const GridSet set = buildGridSet(sim.outputParticles(), ctx, request);
+      // Every rank splats its own particles; rank 0 writes the sum.
+      const GridSet set = buildGridSet(sim.particles(), ctx, request, &sim.ranks());
+      if (!sim.ranks().isRoot()) return;
       GridFileMeta meta;
       meta.scene = sceneName;
       meta.time = info.time;
@@ -67,15 +69,16 @@ void addFieldOutputs(RunOptions& options, const Scene& scene,
       if (previousOutput) previousOutput(sim, info, final);
       CraterMetrics m;
       try {
-        m = measureCrater(sim.outputParticles(), ctx, *crater, resolution);
+        m = measureCrater(sim.particles(), ctx, *crater, resolution, &sim.ranks());
       } catch (const std::exception& e) {
         // A row that says "not found" (found = 0); the run goes on.
         m = CraterMetrics{};
         m.note = std::string("crater measurement failed: ") + e.what();
       }
-      tracking->history.record(info.time, m);
+      // Every rank keeps when it measured (so all agree on measuring again at the end).
       tracking->last = m;
       tracking->lastTime = info.time;
+      if (sim.ranks().isRoot()) tracking->history.record(info.time, m);
     };
     auto previous = options.onFinish;
     options.onFinish = [=](const Simulation& sim, RunSummary& summary) {
@@ -83,12 +86,14 @@ void addFieldOutputs(RunOptions& options, const Scene& scene,
       try {
         const CraterMetrics m = tracking->last && tracking->lastTime == sim.time()
                                     ? *tracking->last
-                                    : measureCrater(sim.outputParticles(), ctx, *crater, resolution);
+                                    : measureCrater(sim.particles(), ctx, *crater, resolution, &sim.ranks());
+        if (!sim.ranks().isRoot()) return;
         const CraterSummary c = craterSummary(m, crater->planar);
         addToSummary(c, summary);
         writeFileAtomically(fs::path(outDir) / "crater_profile.csv", craterProfileCsv(m));
         if (onCrater) onCrater(c);
       } catch (const std::exception& e) {
+        if (!sim.ranks().isRoot()) return;
         // The run's own results stand; say why the crater is missing.
         const CraterSummary c = craterFailure(std::string("crater measurement failed: ") + e.what());
         addToSummary(c, summary);

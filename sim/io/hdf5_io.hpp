@@ -147,24 +147,60 @@ struct DatasetSpec {
   const char* description;
 };
 
-// Creates dataset spec.name in `group` with shape (n) or (n, 3), writes `data` (n or 3n values,
-// row-major) and tags it with `units` and `description`.
+// Where one writer's rows go in a dataset of `total` rows: rows [first, first + n). `create`:
+// the dataset is made by this write (and tagged); otherwise it exists already (the later ranks
+// of a distributed snapshot, sim/io/distributed_snapshot.cpp).
+struct RowSlot {
+  std::size_t first = 0;
+  std::size_t total = 0;
+  bool create = true;
+};
+
+// Writes `data` (n or n * columns values, row-major) as rows `slot` of dataset spec.name in
+// `group`, of shape (total) or, for matrix, (total, columns); a created dataset is tagged with
+// `units` and `description`.
+template <typename T>
+void writeRows(hid_t group, const DatasetSpec& spec, const RowSlot& slot, std::size_t n, bool matrix,
+               const T* data, hsize_t columns = 3) {
+  const std::string label = std::string("dataset '") + spec.name + "'";
+  const hsize_t dims[2] = {static_cast<hsize_t>(slot.total), columns};
+  auto open = [&] {
+    if (!slot.create)
+      return checked(H5Dopen2(group, spec.name, H5P_DEFAULT), H5Dclose, "cannot open " + label);
+    const Hid space = checked(H5Screate_simple(matrix ? 2 : 1, dims, nullptr), H5Sclose,
+                              "cannot create dataspace");
+    Hid created = checked(H5Dcreate2(group, spec.name, H5Type<T>::file(), space.get(), H5P_DEFAULT,
+                                     H5P_DEFAULT, H5P_DEFAULT),
+                          H5Dclose, "cannot create " + label);
+    writeStringAttribute(created.get(), "units", spec.units);
+    writeStringAttribute(created.get(), "description", spec.description);
+    return created;
+  };
+  const Hid dset = open();
+  // An empty vector's data() may be null, which H5Dwrite rejects; nothing to write anyway.
+  if (n == 0) return;
+  if (slot.first == 0 && n == slot.total) {
+    check(H5Dwrite(dset.get(), H5Type<T>::memory(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data),
+          "cannot write " + label);
+    return;
+  }
+  const Hid fileSpace = checked(H5Dget_space(dset.get()), H5Sclose, "cannot get dataspace of " + label);
+  const hsize_t start[2] = {static_cast<hsize_t>(slot.first), 0};
+  const hsize_t count[2] = {static_cast<hsize_t>(n), columns};
+  if (slot.first + n > slot.total) throw std::runtime_error(label + ": rows beyond its end");
+  check(H5Sselect_hyperslab(fileSpace.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
+        "cannot select rows of " + label);
+  const Hid memory = checked(H5Screate_simple(matrix ? 2 : 1, count, nullptr), H5Sclose,
+                             "cannot make a dataspace for " + label);
+  check(H5Dwrite(dset.get(), H5Type<T>::memory(), memory.get(), fileSpace.get(), H5P_DEFAULT, data),
+        "cannot write " + label);
+}
+
+// Creates dataset spec.name in `group` with shape (n) or (n, columns) and writes all of it.
 template <typename T>
 void writeDataset(hid_t group, const DatasetSpec& spec, std::size_t n, bool vector3,
                   const T* data, hsize_t columns = 3) {
-  const hsize_t dims[2] = {static_cast<hsize_t>(n), columns};
-  const Hid space = checked(H5Screate_simple(vector3 ? 2 : 1, dims, nullptr), H5Sclose,
-                            "cannot create dataspace");
-  const std::string label = std::string("dataset '") + spec.name + "'";
-  const Hid dset = checked(H5Dcreate2(group, spec.name, H5Type<T>::file(), space.get(),
-                                      H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                           H5Dclose, "cannot create " + label);
-  // An empty vector's data() may be null, which H5Dwrite rejects; nothing to write anyway.
-  if (n > 0)
-    check(H5Dwrite(dset.get(), H5Type<T>::memory(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data),
-          "cannot write " + label);
-  writeStringAttribute(dset.get(), "units", spec.units);
-  writeStringAttribute(dset.get(), "description", spec.description);
+  writeRows(group, spec, RowSlot{0, n, true}, n, vector3, data, columns);
 }
 
 template <typename T>
@@ -177,9 +213,9 @@ void requireSize(const std::vector<T>& values, std::size_t n, const char* name) 
 
 template <typename T>
 void writeScalarField(hid_t group, const DatasetSpec& spec, const std::vector<T>& values,
-                      std::size_t n) {
+                      std::size_t n, const RowSlot& slot) {
   requireSize(values, n, spec.name);
-  writeDataset(group, spec, n, false, values.data());
+  writeRows(group, spec, slot, n, false, values.data());
 }
 
 

@@ -11,6 +11,7 @@
 
 #include "core/atomic_file.hpp"
 #include "sim/io/hdf5_io.hpp"
+#include "sim/io/snapshot_rows.hpp"
 #include "sim/state/builtin_fields.hpp"
 
 namespace ejecta {
@@ -22,23 +23,24 @@ using namespace hdf5;
 // Writes field f of the real particles as dataset f.spec.name in `group`: shape (n) for a scalar,
 // (n, components) otherwise, row-major; components beyond the geometry's dimension as zero when
 // the field says so (positions).
-void writeField(hid_t group, const ParticleSet& p, const Field& f, Geometry geometry) {
+void writeField(hid_t group, const ParticleSet& p, const Field& f, Geometry geometry,
+                const RowSlot& slot) {
   const std::size_t n = p.numReal;
   const DatasetSpec spec{f.spec.name.c_str(), f.spec.units.c_str(), f.spec.description.c_str()};
   switch (f.storage.kind) {
-    case FieldStorage::Kind::Int32: writeScalarField(group, spec, p.*f.storage.int32, n); return;
-    case FieldStorage::Kind::Int64: writeScalarField(group, spec, p.*f.storage.int64, n); return;
+    case FieldStorage::Kind::Int32: writeScalarField(group, spec, p.*f.storage.int32, n, slot); return;
+    case FieldStorage::Kind::Int64: writeScalarField(group, spec, p.*f.storage.int64, n, slot); return;
     case FieldStorage::Kind::Derived: {
       std::vector<double> values(n);
       for (std::size_t i = 0; i < n; ++i) values[i] = f.spec.derive(p, i);
-      writeScalarField(group, spec, values, n);
+      writeScalarField(group, spec, values, n, slot);
       return;
     }
     default: break;
   }
   const int columns = f.spec.components;
   if (columns == 1) {
-    writeScalarField(group, spec, p.column(f, 0), n);
+    writeScalarField(group, spec, p.column(f, 0), n, slot);
     return;
   }
   const int keep = f.spec.writeDimensionOnly ? std::min(columns, spatialDimension(geometry)) : columns;
@@ -49,13 +51,14 @@ void writeField(hid_t group, const ParticleSet& p, const Field& f, Geometry geom
     if (c < keep)
       for (std::size_t i = 0; i < n; ++i) rows[columns * i + c] = values[i];
   }
-  writeDataset(group, spec, n, true, rows.data(), static_cast<hsize_t>(columns));
+  writeRows(group, spec, slot, n, true, rows.data(), static_cast<hsize_t>(columns));
 }
 
 // Every field of `p` whose declaration stores it in `output`, in registry order.
-void writeFields(hid_t group, const ParticleSet& p, FieldOutput output, Geometry geometry) {
+void writeFields(hid_t group, const ParticleSet& p, FieldOutput output, Geometry geometry,
+                 const RowSlot& slot) {
   for (const Field& f : p.fields())
-    if (f.spec.output == output) writeField(group, p, f, geometry);
+    if (f.spec.output == output) writeField(group, p, f, geometry, slot);
 }
 
 
@@ -68,16 +71,16 @@ void writeRootAttributes(hid_t file, const SnapshotInfo& info) {
   writeStringAttribute(file, "ejecta_version", std::string(kEjectaVersion));
 }
 
-void writeParticles(hid_t file, const ParticleSet& p, Geometry geometry) {
+void writeParticles(hid_t file, const ParticleSet& p, Geometry geometry, const RowSlot& slot) {
   const Hid group = createGroup(file, "/particles");
-  writeFields(group.get(), p, FieldOutput::Particles, geometry);
+  writeFields(group.get(), p, FieldOutput::Particles, geometry, slot);
 }
 
 
-void writeRestart(hid_t file, const ParticleSet& p, const SnapshotInfo& info) {
+void writeRestart(hid_t file, const ParticleSet& p, const SnapshotInfo& info, const RowSlot& slot) {
   const Hid group = createGroup(file, "/restart");
   const hid_t g = group.get();
-  writeFields(g, p, FieldOutput::Restart, info.geometry);
+  writeFields(g, p, FieldOutput::Restart, info.geometry, slot);
   writeStringDataset(g, "scene_source", info.sceneSource, "text of the scene file of the run");
   writeScalarAttribute(g, "dt_next", info.dtNext);
   writeScalarAttribute<std::int64_t>(g, "snapshot_index", info.snapshotIndex);
@@ -91,19 +94,6 @@ void writeRestart(hid_t file, const ParticleSet& p, const SnapshotInfo& info) {
                           info.initialMaterialInternal.size());
   }
   writeScalarAttribute(g, "wall_seconds", info.wallSeconds);
-}
-
-void writeSnapshotFile(const std::filesystem::path& tempPath, const ParticleSet& p,
-                       const SnapshotInfo& info) {
-  const Hid fapl = checked(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "cannot create property list");
-  // STRONG: closing the file closes everything in it, so it is complete before the rename.
-  check(H5Pset_fclose_degree(fapl.get(), H5F_CLOSE_STRONG), "cannot set file close degree");
-  Hid file = checked(H5Fcreate(tempPath.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, fapl.get()),
-                     H5Fclose, "cannot create temporary file '" + tempPath.string() + "'");
-  writeRootAttributes(file.get(), info);
-  writeParticles(file.get(), p, info.geometry);
-  writeRestart(file.get(), p, info);
-  check(file.close(), "cannot close temporary file '" + tempPath.string() + "'");
 }
 
 std::size_t particleCount(hid_t file) {
@@ -252,11 +242,40 @@ ParticleSet readParticles(hid_t file, int part, int parts) {
 
 }  // namespace
 
+void createSnapshotFile(const std::filesystem::path& tempPath, const ParticleSet& p,
+                        const SnapshotInfo& info, std::size_t totalRows) {
+  const Hid fapl = checked(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "cannot create property list");
+  // STRONG: closing the file closes everything in it, so it is complete before the rename.
+  check(H5Pset_fclose_degree(fapl.get(), H5F_CLOSE_STRONG), "cannot set file close degree");
+  Hid file = checked(H5Fcreate(tempPath.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, fapl.get()),
+                     H5Fclose, "cannot create temporary file '" + tempPath.string() + "'");
+  const RowSlot slot{0, totalRows, true};
+  writeRootAttributes(file.get(), info);
+  writeParticles(file.get(), p, info.geometry, slot);
+  writeRestart(file.get(), p, info, slot);
+  check(file.close(), "cannot close temporary file '" + tempPath.string() + "'");
+}
+
+void writeSnapshotRows(const std::filesystem::path& tempPath, const ParticleSet& p, Geometry geometry,
+                       std::size_t first, std::size_t totalRows) {
+  if (p.numReal == 0) return;
+  const Hid fapl = checked(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "cannot create property list");
+  check(H5Pset_fclose_degree(fapl.get(), H5F_CLOSE_STRONG), "cannot set file close degree");
+  Hid file = checked(H5Fopen(tempPath.c_str(), H5F_ACC_RDWR, fapl.get()), H5Fclose,
+                     "cannot open temporary file '" + tempPath.string() + "'");
+  const RowSlot slot{first, totalRows, false};
+  for (const FieldOutput output : {FieldOutput::Particles, FieldOutput::Restart}) {
+    const Hid group = openGroup(file.get(), groupPath(output));
+    writeFields(group.get(), p, output, geometry, slot);
+  }
+  check(file.close(), "cannot close temporary file '" + tempPath.string() + "'");
+}
+
 void writeSnapshot(const std::string& path, const ParticleSet& p, const SnapshotInfo& info) {
   try {
     const QuietHdf5Errors quiet;
     AtomicFileTarget target(path);
-    writeSnapshotFile(target.tempPath(), p, info);
+    createSnapshotFile(target.tempPath(), p, info, p.numReal);
     target.commit();
   } catch (const std::exception& e) {
     throw std::runtime_error("snapshot '" + path + "': " + e.what());

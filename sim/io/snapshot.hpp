@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "sim/parallel/communicator.hpp"
 #include "sim/state/geometry.hpp"
 #include "sim/state/particles.hpp"
 
@@ -42,6 +43,13 @@ struct SnapshotInfo {
 // Position components beyond the geometry's dimension are written as 0 (1D: (x,0,0); 2D and
 // RZ: (x,y,0)). Throws std::runtime_error naming the file on failure.
 void writeSnapshot(const std::string& path, const ParticleSet& p, const SnapshotInfo& info);
+// A distributed run's snapshot (a collective): every rank's real particles in one file of the
+// same layout, written by the ranks in turn so that none holds another's particles. Rows are in
+// rank order, each rank's in its own order (a particle is followed by its `id`, as on one rank,
+// whose rows are in its locality order). Atomic as above: a failure on any rank throws the same
+// error on every rank and leaves the earlier file intact.
+void writeSnapshot(const std::string& path, const ParticleSet& p, const SnapshotInfo& info,
+                   const Communicator& ranks);
 
 // Reads a snapshot written by writeSnapshot. Every stored array is restored bit for bit;
 // numReal = N and there are no ghosts; omega is 1 and divv, curlv, areaDensity are 0 (they are

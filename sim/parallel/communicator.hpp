@@ -36,6 +36,24 @@ class Communicator {
   // partner rather than per rank: the halo exchange, whose partners are a rank's neighbours.
   virtual std::vector<Bytes> exchangeWith(std::span<const int> to, const std::vector<Bytes>& payloads,
                                           std::span<const int> from) const = 0;
+  // A point-to-point exchange under way (startExchangeWith).
+  class PendingExchange {
+   public:
+    virtual ~PendingExchange() = default;
+    // Waits until every message has arrived and gone; what each rank of `from` sent, in from's
+    // order. Call once.
+    virtual std::vector<Bytes> finish() = 0;
+    // Lets the messages advance without waiting (MPI moves a large message only inside its
+    // calls); a computation that overlaps them calls it now and then.
+    virtual void progress() {}
+  };
+  // exchangeWith for messages whose sizes the receiver knows (sizes[k] bytes from from[k], as
+  // in a halo refresh), without waiting: one message each way, and this rank computes until
+  // finish(). The same pairing rules as exchangeWith; one pending exchange at a time.
+  virtual std::unique_ptr<PendingExchange> startExchangeWith(std::span<const int> to,
+                                                             std::vector<Bytes> payloads,
+                                                             std::span<const int> from,
+                                                             std::span<const std::size_t> sizes) const = 0;
   // Every rank's bytes at rank 0 (indexed by rank there; empty on the other ranks).
   virtual std::vector<Bytes> gatherToRoot(std::span<const std::byte> mine) const = 0;
   // Element-wise over ranks, in place (exact: integer sums and extrema do not depend on order).
@@ -72,6 +90,9 @@ class SerialCommunicator final : public Communicator {
                                   std::span<const int> from) const override {
     return !to.empty() && !from.empty() ? payloads : std::vector<Bytes>(from.size());
   }
+  std::unique_ptr<PendingExchange> startExchangeWith(std::span<const int> to, std::vector<Bytes> payloads,
+                                                     std::span<const int> from,
+                                                     std::span<const std::size_t>) const override;
   std::vector<Bytes> gatherToRoot(std::span<const std::byte> mine) const override {
     return allGather(mine);
   }

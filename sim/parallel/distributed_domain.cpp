@@ -114,6 +114,16 @@ void DistributedDomain::refreshHalos(ParticleSet& p) const {
   halos_.refresh(p, *comm_);
 }
 
+std::unique_ptr<Communicator::PendingExchange> DistributedDomain::startHaloRefresh(const ParticleSet& p) const {
+  const Stopwatch watch(stats_.haloSeconds);
+  return halos_.startRefresh(p, *comm_);
+}
+
+void DistributedDomain::finishHaloRefresh(ParticleSet& p, Communicator::PendingExchange& pending) const {
+  const Stopwatch watch(stats_.haloSeconds);
+  halos_.finishRefresh(p, pending);
+}
+
 void DistributedDomain::refreshHaloArray(std::vector<double>& values, int stride) const {
   const Stopwatch watch(stats_.haloSeconds);
   halos_.refreshArray(values, stride, *comm_);

@@ -58,6 +58,10 @@ class DistributedDomain {
   // The halo exchange (sim/parallel/halo_exchange.hpp), timed into stats().
   void buildHalos(ParticleSet& p, double supportFactor);
   void refreshHalos(ParticleSet& p) const;
+  // refreshHalos in two halves (HaloExchange::startRefresh), timed alike: the time stats() shows
+  // is what the overlap did not hide.
+  std::unique_ptr<Communicator::PendingExchange> startHaloRefresh(const ParticleSet& p) const;
+  void finishHaloRefresh(ParticleSet& p, Communicator::PendingExchange& pending) const;
   void refreshHaloArray(std::vector<double>& values, int stride) const;
   HaloExchange& halos() { return halos_; }
   const HaloExchange& halos() const { return halos_; }
@@ -69,6 +73,9 @@ class DistributedDomain {
   // id order (a collective): what gauges read.
   ParticleSet gatherNear(const ParticleSet& p, std::span<const std::array<double, 3>> points,
                          double supportFactor) const;
+  // This rank's real particles `indices` and every other rank's it names, at rank 0 in id
+  // order (a collective; empty elsewhere).
+  ParticleSet gatherIndices(const ParticleSet& p, std::span<const std::size_t> indices) const;
   std::uint64_t totalParticles(const ParticleSet& p) const { return comm_->sum(p.numReal); }
   const DomainStats& stats() const { return stats_; }
 
@@ -76,7 +83,6 @@ class DistributedDomain {
   void decompose(ParticleSet& p, std::span<const std::uint64_t> cost);
   // Migrates every real particle to the owner of its key under the current splitters.
   void sendToOwners(ParticleSet& p, std::span<const std::uint64_t> keys);
-  ParticleSet gatherIndices(const ParticleSet& p, std::span<const std::size_t> indices) const;
 
   std::shared_ptr<const Communicator> comm_;
   int dimension_;

@@ -213,19 +213,34 @@ void HaloExchange::build(ParticleSet& p, int dimension, double supportFactor, co
   p.resize(local + received_);
   p.ghostSource.resize(p.numGhosts(), kRemoteSource);
   firstFrom_.assign(recvRanks_.size(), local);
+  countFrom_.assign(recvRanks_.size(), 0);
   std::size_t at = local;
   for (std::size_t k = 0; k < in.size(); ++k) {
     firstFrom_[k] = at;
+    countFrom_[k] = packer.count(in[k]);
     packer.unpack(p, in[k], at);
-    at += packer.count(in[k]);
+    at += countFrom_[k];
   }
 }
 
 void HaloExchange::refresh(ParticleSet& p, const Communicator& comm) const {
+  const auto pending = startRefresh(p, comm);
+  finishRefresh(p, *pending);
+}
+
+std::unique_ptr<Communicator::PendingExchange> HaloExchange::startRefresh(const ParticleSet& p,
+                                                                          const Communicator& comm) const {
   const ParticlePacker packer(p, PackedFields::HaloValues);
   std::vector<Bytes> out(sendRanks_.size());
   for (std::size_t s = 0; s < sendRanks_.size(); ++s) packer.pack(p, sendTo_[s], out[s]);
-  const std::vector<Bytes> in = comm.exchangeWith(sendRanks_, out, recvRanks_);
+  std::vector<std::size_t> sizes(recvRanks_.size());
+  for (std::size_t k = 0; k < sizes.size(); ++k) sizes[k] = countFrom_[k] * packer.recordBytes();
+  return comm.startExchangeWith(sendRanks_, std::move(out), recvRanks_, sizes);
+}
+
+void HaloExchange::finishRefresh(ParticleSet& p, Communicator::PendingExchange& pending) const {
+  const ParticlePacker packer(p, PackedFields::HaloValues);
+  const std::vector<Bytes> in = pending.finish();
   for (std::size_t k = 0; k < in.size(); ++k) packer.unpack(p, in[k], firstFrom_[k]);
 }
 
@@ -234,7 +249,9 @@ void HaloExchange::refreshArray(std::vector<double>& values, int stride, const C
   std::vector<Bytes> out(sendRanks_.size());
   for (std::size_t r = 0; r < sendRanks_.size(); ++r)
     for (std::size_t j : sendTo_[r]) appendBytes(out[r], values.data() + s * j, s);
-  const std::vector<Bytes> in = comm.exchangeWith(sendRanks_, out, recvRanks_);
+  std::vector<std::size_t> sizes(recvRanks_.size());
+  for (std::size_t k = 0; k < sizes.size(); ++k) sizes[k] = countFrom_[k] * s * sizeof(double);
+  const std::vector<Bytes> in = comm.startExchangeWith(sendRanks_, std::move(out), recvRanks_, sizes)->finish();
   for (std::size_t k = 0; k < in.size(); ++k) {
     const std::vector<double> theirs = fromBytes<double>(in[k]);
     std::copy(theirs.begin(), theirs.end(), values.begin() + static_cast<std::ptrdiff_t>(s * firstFrom_[k]));

@@ -18,6 +18,7 @@
 // other), and a rank tests only its particles in cells near a neighbour's boxes.
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -38,6 +39,13 @@ class HaloExchange {
   // Recopies the halo fields' values (positions apart) from their owners (a collective), after
   // a pass changed them and the boundary ghosts were refreshed.
   void refresh(ParticleSet& p, const Communicator& comm) const;
+  // refresh() in two halves, so that work reading no halo value runs while the messages travel
+  // (the force pass's interior, sim/sph/hydro_force.hpp): startRefresh packs this rank's values
+  // and sends them; finishRefresh waits and writes what arrived into the halos. The sizes are
+  // known from the build, so each partner gets one message.
+  std::unique_ptr<Communicator::PendingExchange> startRefresh(const ParticleSet& p,
+                                                              const Communicator& comm) const;
+  void finishRefresh(ParticleSet& p, Communicator::PendingExchange& pending) const;
   // The same for a per-particle array of the workspace holding `stride` values per particle
   // (a velocity gradient, 9), sized for every particle, halos included.
   void refreshArray(std::vector<double>& values, int stride, const Communicator& comm) const;
@@ -52,6 +60,7 @@ class HaloExchange {
   std::vector<std::vector<std::size_t>> sendTo_;  // per send rank: local indices sent there
   std::vector<int> recvRanks_;                    // neighbours that may send to this rank
   std::vector<std::size_t> firstFrom_;            // per receive rank: index of its first halo
+  std::vector<std::size_t> countFrom_;            // per receive rank: its halos here
   std::size_t received_ = 0;
 };
 

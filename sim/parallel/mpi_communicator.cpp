@@ -39,6 +39,54 @@ std::vector<Bytes> splitBytes(const Bytes& all, const std::vector<int>& counts, 
   return out;
 }
 
+// The requests of a startExchangeWith and the buffers they read and fill, kept alive until
+// they complete (a destructor that finds them pending waits, so no buffer outlives its use).
+class MpiPendingExchange final : public Communicator::PendingExchange {
+ public:
+  MpiPendingExchange(MPI_Comm comm, std::span<const int> to, std::vector<Bytes> payloads,
+                     std::span<const int> from, std::span<const std::size_t> sizes)
+      : sent_(std::move(payloads)), received_(from.size()) {
+    // A tag of its own: its messages cannot pair with a blocking exchange's.
+    constexpr int kPendingTag = 7103;
+    for (std::size_t k = 0; k < from.size(); ++k) {
+      received_[k].resize(sizes[k]);
+      if (sizes[k] == 0) continue;
+      requests_.emplace_back();
+      MPI_Irecv(received_[k].data(), checkedCount(sizes[k]), MPI_BYTE, from[k], kPendingTag, comm,
+                &requests_.back());
+    }
+    for (std::size_t k = 0; k < to.size(); ++k) {
+      if (sent_[k].empty()) continue;
+      requests_.emplace_back();
+      MPI_Isend(sent_[k].data(), checkedCount(sent_[k].size()), MPI_BYTE, to[k], kPendingTag, comm,
+                &requests_.back());
+    }
+  }
+  ~MpiPendingExchange() override { wait(); }
+  MpiPendingExchange(const MpiPendingExchange&) = delete;
+  MpiPendingExchange& operator=(const MpiPendingExchange&) = delete;
+
+  std::vector<Bytes> finish() override {
+    wait();
+    return std::move(received_);
+  }
+  void progress() override {
+    if (requests_.empty()) return;
+    int done = 0;
+    MPI_Testall(static_cast<int>(requests_.size()), requests_.data(), &done, MPI_STATUSES_IGNORE);
+    if (done) requests_.clear();
+  }
+
+ private:
+  void wait() {
+    if (requests_.empty()) return;
+    MPI_Waitall(static_cast<int>(requests_.size()), requests_.data(), MPI_STATUSES_IGNORE);
+    requests_.clear();
+  }
+  std::vector<Bytes> sent_, received_;
+  std::vector<MPI_Request> requests_;
+};
+
 class MpiCommunicator final : public Communicator {
  public:
   // `owned`: the communicator was made by split() and is freed with this object.
@@ -123,6 +171,12 @@ class MpiCommunicator final : public Communicator {
     }
     MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
     return received;
+  }
+
+  std::unique_ptr<PendingExchange> startExchangeWith(std::span<const int> to, std::vector<Bytes> payloads,
+                                                     std::span<const int> from,
+                                                     std::span<const std::size_t> sizes) const override {
+    return std::make_unique<MpiPendingExchange>(comm_, to, std::move(payloads), from, sizes);
   }
 
   std::vector<Bytes> gatherToRoot(std::span<const std::byte> mine) const override {

@@ -184,17 +184,19 @@ class RunOutputs {
     }
     energy_ << '\n';
   }
-  // Writes sim.outputParticles() (collected beforehand).
+  // Every rank writes its particles into the one file (a collective); rank 0 the XDMF series.
   void writeSnapshot(const Simulation& sim, SnapshotInfo info) {
-    if (!enabled()) return;
+    if (!logging()) return;
     energy_.flush();
     gauges_.flush();
     const std::string name = snapshotName(info.snapshotIndex);
     info.sceneSource = sourceWithOverrides(options_, sim.depositFirings());
-    const ParticleSet& all = sim.outputParticles();
-    ejecta::writeSnapshot((fs::path(options_.outDir) / "snapshots" / name).string(), all, info);
-    xdmf_.push_back({"snapshots/" + name, info.time, all.numReal, info.geometry,
-                     xdmfAttributes(all)});
+    const std::uint64_t total = sim.totalParticles();
+    ejecta::writeSnapshot((fs::path(options_.outDir) / "snapshots" / name).string(), sim.particles(),
+                          info, sim.ranks());
+    if (!enabled()) return;
+    xdmf_.push_back({"snapshots/" + name, info.time, total, info.geometry,
+                     xdmfAttributes(sim.particles())});
     writeXdmfSeries((fs::path(options_.outDir) / "snapshots.xdmf").string(), xdmf_);
   }
   void setSeries(std::vector<XdmfEntry> entries) { xdmf_ = std::move(entries); }
@@ -272,16 +274,16 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
   ProgressLine progress(options.progress && root);
   RunOutcome outcome;
   bool lastWritten = atSnapshot;
-  double outputSeconds = 0.0;  // gathering and writing the outputs, the in-situ hooks'
+  double outputSeconds = 0.0;  // writing the snapshots, and the in-situ hooks
   auto snapshot = [&](bool final) {
     const auto begin = std::chrono::steady_clock::now();
     info.time = sim.time();
     info.step = sim.stepCount();
     info.dtNext = sim.dtNext();
     info.wallSeconds = wall();
-    if (snapshots || options.onOutput) sim.collectParticles();
     if (snapshots) outputs.writeSnapshot(sim, info);
-    if (options.onOutput && root) options.onOutput(sim, info, final);
+    // On every rank: hooks splat their own particles and merge, or gather what they draw.
+    if (options.onOutput) options.onOutput(sim, info, final);
     ++info.snapshotIndex;
     outputSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   };
@@ -388,10 +390,8 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
   addToSummary(outcome.ledger, s);
   outcome.gauges = outputs.gaugePulses();
   addToSummary(outcome.gauges, s);
-  // The hooks read every rank's particles at rank 0: gathered afresh (a restart already at
-  // t_end has written nothing, and so gathered nothing).
-  if (options.onFinish && sim.ranks().size() > 1) sim.collectParticles();
-  if (options.onFinish && root) options.onFinish(sim, s);
+  // On every rank, as onOutput (the summary is rank 0's).
+  if (options.onFinish) options.onFinish(sim, s);
   if (outputs.enabled())
     writeSummaryJson((fs::path(options.outDir) / "summary.json").string(), s);
   return outcome;

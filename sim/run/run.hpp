@@ -38,9 +38,10 @@ struct RunOptions {
   // state between steps).
   std::vector<std::shared_ptr<PhysicsPackage>> packages;
   // The ranks of a distributed run (sim/parallel/communicator.hpp; nullptr: one rank). Every
-  // rank calls runScene or restartRun alike; rank 0 writes the files and calls the hooks
-  // observer on each rank with its own particles, onOutput and onFinish on rank 0 with every
-  // rank's (Simulation::outputParticles()).
+  // rank calls runScene or restartRun alike, and every rank calls the hooks, with its own
+  // particles (Simulation::particles()): a hook's collectives (a grid's merge, a gather of the
+  // particles it draws, Simulation::gatheredParticles()) are made by all ranks, and its files
+  // written by rank 0 (Communicator::isRoot()), as the run's own are.
   std::shared_ptr<const Communicator> ranks;
 };
 

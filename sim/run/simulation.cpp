@@ -171,6 +171,7 @@ void Simulation::distributeFlaws(const ParticleSet& initial) {
 }
 
 void Simulation::initialise() {
+  ++stateVersion_;
   if (fracture_ && !fracture_->flawsReady()) distributeFlaws(p_);
   stateTime_ = time_;
   if (scene_.sph.density == DensityMethod::Continuity &&
@@ -183,6 +184,7 @@ void Simulation::initialise() {
 }
 
 void Simulation::resume(double time, long step, double dtNext) {
+  ++stateVersion_;
   if (fracture_ && !fracture_->flawsReady()) distributeFlaws(p_);
   time_ = time;
   stateTime_ = time;
@@ -234,14 +236,30 @@ std::vector<ConservedTotals> Simulation::totalsByMaterial() const {
   return mine;
 }
 
-void Simulation::collectParticles() {
-  if (domain_.distributed()) collected_ = domain_.gatherToRoot(p_);
+const ParticleSet& Simulation::gatheredParticles() const {
+  if (!domain_.distributed()) return p_;
+  if (collectedVersion_ != stateVersion_) {
+    collected_ = domain_.gatherToRoot(p_);
+    collectedVersion_ = stateVersion_;
+  }
+  return collected_;
+}
+
+ParticleSet Simulation::gatherParticlesWhere(const ParticleFilter& keep) const {
+  std::vector<std::size_t> kept;
+  for (std::size_t i = 0; i < p_.numReal; ++i)
+    if (keep(p_, i)) kept.push_back(i);
+  if (domain_.distributed()) return domain_.gatherIndices(p_, kept);
+  ParticleSet out = p_;
+  out.permute(kept);
+  out.numReal = kept.size();
+  return out;
 }
 
 const ParticleSet& Simulation::particlesNear(std::span<const std::array<double, 3>> points) {
   if (!domain_.distributed()) return p_;
-  collected_ = domain_.gatherNear(p_, points, kKernelSupport);
-  return collected_;
+  near_ = domain_.gatherNear(p_, points, kKernelSupport);
+  return near_;
 }
 
 std::vector<std::uint64_t> Simulation::particleCosts() const {
@@ -327,22 +345,19 @@ void Simulation::evaluateDerivatives() {
   evaluateEquationOfState();
   // Ghosts first (their sources are here), then the halos (which include other ranks' ghosts).
   boundaries_.refreshGhosts(p_);
-  if (distributed) domain_.refreshHalos(p_);
-  if (scene_.sph.viscosityReconstruction != ViscosityReconstruction::None) {
-    boundaries_.refreshGhostTensor(p_, ws_.velocityGradient);
-    if (distributed) domain_.refreshHaloArray(ws_.velocityGradient, 9);
-  }
-  if (ws_.geometry == Geometry::Axisymmetric) {
+  const bool reconstruction = scene_.sph.viscosityReconstruction != ViscosityReconstruction::None;
+  if (reconstruction) boundaries_.refreshGhostTensor(p_, ws_.velocityGradient);
+  const bool rz = ws_.geometry == Geometry::Axisymmetric;
+  if (rz) {
     for (std::size_t g = p_.numReal; g < p_.numReal + boundaries_.numBoundaryGhosts(); ++g) {
       const std::size_t s = p_.ghostSource[g - p_.numReal];
       ws_.smoothedR[g] = ws_.smoothedR[s];
       ws_.dSmoothedR[g] = ws_.dSmoothedR[s];
     }
-    if (distributed) {
-      domain_.refreshHaloArray(ws_.smoothedR, 1);
-      domain_.refreshHaloArray(ws_.dSmoothedR, 1);
-    }
   }
+  // The pairs are found from the halos' h, which the density pass may have changed: it comes
+  // first, alone (8 bytes a halo); the rest of their values travel during the force pass.
+  if (distributed) domain_.refreshHaloArray(p_.h, 1);
   switch (dim) {
     case 1: ws_.lists.findGhostGathers<1>(p_, ws_.grid, kKernelSupport);
             ws_.lists.buildPairs<1>(p_, kKernelSupport); break;
@@ -351,7 +366,25 @@ void Simulation::evaluateDerivatives() {
     default: ws_.lists.findGhostGathers<3>(p_, ws_.grid, kKernelSupport);
              ws_.lists.buildPairs<3>(p_, kKernelSupport); break;
   }
-  runForcePass(p_, ws_);
+  if (!distributed) {
+    runForcePass(p_, ws_);
+  } else {
+    // The halos' values are sent now and arrive while the force pass sums the particles that
+    // have no halo neighbour (sim/sph/hydro_force.hpp: the same sums as waiting first).
+    const auto pending = domain_.startHaloRefresh(p_);
+    HaloArrival arrival;
+    arrival.first = p_.size() - domain_.halos().received();
+    arrival.progress = [&pending] { pending->progress(); };
+    arrival.arrive = [&] {
+      domain_.finishHaloRefresh(p_, *pending);
+      if (reconstruction) domain_.refreshHaloArray(ws_.velocityGradient, 9);
+      if (rz) {
+        domain_.refreshHaloArray(ws_.smoothedR, 1);
+        domain_.refreshHaloArray(ws_.dSmoothedR, 1);
+      }
+    };
+    runForcePass(p_, ws_, &arrival);
+  }
   const PackageContext context = packageContext();
   for (const auto& package : packages_) package->evaluateDerivatives(p_, context);
 }
@@ -496,6 +529,7 @@ bool Simulation::fireDueDeposits() {
 }
 
 void Simulation::step(double limit) {
+  ++stateVersion_;
   if (step_ % kSortInterval == 0) {
     // Particles that crossed into another rank's range move there (new ranges when the work is
     // out of balance), then each rank orders its own for locality.

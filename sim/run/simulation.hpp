@@ -6,6 +6,7 @@
 // n+1 use velocities and energies predicted to n+1. Every step: neighbours -> density pass ->
 // equation of state -> force pass; then the time-step criteria and a health check.
 #include <array>
+#include <functional>
 #include <memory>
 #include <cstdint>
 #include <span>
@@ -92,7 +93,11 @@ class Simulation {
   const Scene& scene() const { return scene_; }
   // This rank's particles (all of them on one rank).
   const ParticleSet& particles() const { return p_; }
-  ParticleSet& particles() { return p_; }
+  // (Write access may change the state: a later gatheredParticles() gathers afresh.)
+  ParticleSet& particles() {
+    ++stateVersion_;
+    return p_;
+  }
   const MaterialTable& materials() const { return materials_; }
   // Totals over every rank's particles, summed in rank order (collectives, as is every member
   // below that reads all ranks).
@@ -104,15 +109,16 @@ class Simulation {
   // The ranks of this run and the decomposition's counters.
   const Communicator& ranks() const { return domain_.comm(); }
   const DistributedDomain& domain() const { return domain_; }
-  // Gathers every rank's particles for the outputs (a collective): afterwards outputParticles()
-  // on rank 0 holds them all in id order. On one rank it gathers nothing and outputParticles()
-  // is particles().
-  void collectParticles();
-  const ParticleSet& outputParticles() const {
-    return domain_.distributed() ? collected_ : p_;
-  }
-  // Every rank's particles near `points` (kernel reach), at rank 0: what gauges read. One rank:
-  // particles().
+  // Every rank's particles at rank 0, in id order: what outputs drawn from all of them (images,
+  // thermal pictures) read. A collective the first time it is called at a state (every rank
+  // calls it; later calls before the state changes reuse the gather). Empty on the other ranks;
+  // one rank: particles().
+  const ParticleSet& gatheredParticles() const;
+  // The real particles for which keep(p, i) holds, from every rank, at rank 0 in id order (a
+  // collective; empty elsewhere): a few hot ones for a thermal pass rather than all of them.
+  // One rank: those of particles(), in its order.
+  using ParticleFilter = std::function<bool(const ParticleSet&, std::size_t)>;
+  ParticleSet gatherParticlesWhere(const ParticleFilter& keep) const;
   const ParticleSet& particlesNear(std::span<const std::array<double, 3>> points);
 
  private:
@@ -140,7 +146,12 @@ class Simulation {
   Scene scene_;
   DistributedDomain domain_;
   ParticleSet p_;
-  ParticleSet collected_;  // rank 0 of a distributed run: every rank's particles (outputs)
+  // Rank 0 of a distributed run: every rank's particles as gathered at state stateVersion_
+  // (gatheredParticles), and those near the gauges (particlesNear).
+  mutable ParticleSet collected_;
+  mutable long collectedVersion_ = -1;
+  long stateVersion_ = 0;  // advanced by every change of the state
+  ParticleSet near_;
   MaterialTable materials_;
   Boundaries boundaries_;
   HydroWorkspace ws_;

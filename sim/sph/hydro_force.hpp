@@ -14,15 +14,30 @@
 // RZ (ring masses, Brookshaw 2003 / Garcia-Senz et al. 2009 area-weighted form): rho^2 becomes
 // rho * eta and rho_ij becomes eta_ij; the hoop terms +P_i rt'/(rho_i rt_i) (radial acceleration)
 // and -P_i v_r rt'/(rho_i rt_i) (energy) complete the Lagrangian derivation (docs/rz.md).
+#include <functional>
+
 #include "sim/sph/hydro_workspace.hpp"
 #include "sim/state/particles.hpp"
 
 namespace ejecta {
 
-// Requires: density pass done, EOS evaluated, ghosts refreshed, pair lists built.
+// A distributed pass's halos, whose values arrive while the pass runs: entries [first, p.size())
+// are other ranks' particles, with their positions and h already here (the pairs were built from
+// them) and the rest of their values in flight. The pass sums the real particles none of whose
+// pairs is a halo first, calling progress() between slices of them (MPI moves a message only
+// inside its calls), then arrive() (which finishes the refresh), then the others. Each
+// particle's sum is the one the blocking order gives, term for term: the same bits.
+struct HaloArrival {
+  std::size_t first = 0;
+  std::function<void()> progress;
+  std::function<void()> arrive;
+};
+
+// Requires: density pass done, EOS evaluated, ghosts refreshed, pair lists built (and, without
+// `halos`, the halos refreshed).
 // Produces for the real particles a and du_dt; with continuity density drho_dt (and dh_dt for the
 // seed's h); with the switch dalpha_dt; for solids dstress_dt and the strain rate.
-void runForcePass(ParticleSet& p, HydroWorkspace& ws);
+void runForcePass(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos = nullptr);
 
 // The viscosity switch's state, for a run whose scene turns it on and whose particles do not yet
 // carry alpha (a new run, or a restart from a snapshot written without it): alpha_min, except

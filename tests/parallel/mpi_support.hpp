@@ -53,8 +53,7 @@ inline RankedRun runOn(const Scene& scene, std::shared_ptr<const Communicator> r
   out.time = sim.time();
   out.totals = sim.totals();
   out.stats = sim.domain().stats();
-  sim.collectParticles();
-  out.particles = sim.outputParticles();
+  out.particles = sim.gatheredParticles();
   if (!sim.domain().distributed()) sortById(out.particles);
   return out;
 }

@@ -4,11 +4,13 @@
 // checks can compare a rank's share with the whole set directly.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
 #include "parallel/mpi_support.hpp"
 #include "sim/parallel/distributed_domain.hpp"
+#include "sim/parallel/order_statistics.hpp"
 #include "sim/sph/kernel.hpp"
 
 namespace ejecta::test {
@@ -113,6 +115,33 @@ TEST(MpiDecomposition, HalosHoldEveryNeighbourIn2d) {
 }
 TEST(MpiDecomposition, HalosHoldEveryNeighbourIn3d) {
   expectCompleteHalos("verification/sedov_3d.toml", 3, "0.05");
+}
+
+}  // namespace
+}  // namespace ejecta::test
+
+namespace ejecta::test {
+namespace {
+
+// The k-th smallest of values spread unevenly over the ranks (one rank holds none) is the
+// element a sort of all of them gives, on every rank: the default voxel of a distributed
+// run's grids is the one-rank run's exactly.
+TEST(MpiOrderStatistics, KthSmallestOverRanksIsTheSortedElement) {
+  const auto world = worldCommunicator();
+  std::vector<double> all;
+  for (int i = 0; i < 500; ++i) all.push_back(std::sin(1.7 * i) * std::exp(0.01 * i) - (i % 3 == 0 ? 0.0 : 0.3));
+  std::vector<double> mine;
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (world->rank() != 1 && static_cast<int>(i * i % 7) % world->size() == world->rank()) mine.push_back(all[i]);
+  std::vector<double> held = mine;
+  // What every rank holds, by gathering it (for the check only).
+  std::vector<double> gathered;
+  for (const Bytes& b : world->allGather({reinterpret_cast<const std::byte*>(held.data()), held.size() * sizeof(double)}))
+    for (double v : fromBytes<double>(b)) gathered.push_back(v);
+  std::sort(gathered.begin(), gathered.end());
+  ASSERT_FALSE(gathered.empty());
+  for (std::size_t k = 0; k < gathered.size(); k += 13) EXPECT_EQ(kthSmallest(mine, k, *world), gathered[k]) << k;
+  EXPECT_EQ(upperMedian(mine, *world), gathered[gathered.size() / 2]);
 }
 
 }  // namespace

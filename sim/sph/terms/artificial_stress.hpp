@@ -5,6 +5,7 @@
 //   R = -epsilon sigma / (rho s), rotated back from the principal frame,
 // and a pair adds (R_i + R_j) f^n to its stress, f = W(r)/W(dp) with dp = h/eta the spacing.
 // Symmetric in i and j, so it conserves momentum; its work goes to du/dt with the viscosity's.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
@@ -28,12 +29,21 @@ class ArtificialStress {
     integerPower_ = integerExponent_ == exponent_ && integerExponent_ <= 16;
     double dwRef;
     K<D>::shape(1.0 / ws.sph.eta, wRef_, dwRef);
+    refresh(p, ws, 0);
+  }
+
+  // Recomputes R of particles [begin, p.size()) (halos whose values arrived).
+  void refresh(const ParticleSet& p, const HydroWorkspace& ws, std::size_t begin) {
     if (!enabled()) return;
     const std::size_t n = p.size();
     for (int a = 0; a < D; ++a)
-      for (int b = a; b < D; ++b) R_[kSymIndex[a][b]].assign(n, 0.0);
+      for (int b = a; b < D; ++b) {
+        std::vector<double>& r = R_[kSymIndex[a][b]];
+        r.resize(n);
+        std::fill(r.begin() + static_cast<std::ptrdiff_t>(begin), r.end(), 0.0);
+      }
 #pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = begin; i < n; ++i) {
       if (!(ws.shearModulus[p.material[i]] > 0.0)) continue;  // fluids: no tensile instability
       const double sigmaI = RZ ? p.areaDensity[i] : p.rho[i];
       principalTension(actingStress(p, ws, i), epsilon_ / (p.rho[i] * sigmaI), i);

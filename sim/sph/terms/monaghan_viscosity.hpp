@@ -34,16 +34,20 @@ class MonaghanViscosity {
         throw std::logic_error("viscosity switch on but the particles carry no alpha");
       switchAlpha_ = p.alpha.data();  // ghosts carry their source's alpha (a halo field)
     }
-    if (balsara_) {
-      // Real and ghost particles share their source's div v and curl v.
-      shearFactor_.resize(p.size());
-#pragma omp parallel for schedule(static)
-      for (std::size_t i = 0; i < p.size(); ++i) {
-        const double div = std::abs(p.divv[i]);
-        shearFactor_[i] = div / (div + p.curlv[i] + 1e-4 * p.cs[i] / p.h[i] + 1e-300);
-      }
-    }
+    refresh(p, 0);
     if (reconstruct_) gradient_ = ws.velocityGradient.data();
+  }
+
+  // Recomputes what it holds of particles [begin, p.size()) (halos whose values arrived).
+  void refresh(const ParticleSet& p, std::size_t begin) {
+    if (!balsara_) return;
+    // Real and ghost particles share their source's div v and curl v.
+    shearFactor_.resize(p.size());
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = begin; i < p.size(); ++i) {
+      const double div = std::abs(p.divv[i]);
+      shearFactor_[i] = div / (div + p.curlv[i] + 1e-4 * p.cs[i] / p.h[i] + 1e-300);
+    }
   }
 
   // Pi_ij / sigma_ij: the pair's viscous pressure over density squared [m^2/s^2 per (kg/m^3)

@@ -34,13 +34,19 @@ struct StressDivergence {
   std::array<std::vector<double>, 6> T;  // sigma scaled for the momentum form, in-plane only
   std::vector<double> hoop;              // RZ: effective sigma_theta_theta [Pa]
 
-  StressDivergence(const ParticleSet& p, const HydroWorkspace& ws, MomentumForm form) {
+  StressDivergence(const ParticleSet& p, const HydroWorkspace& ws, MomentumForm form) : form_(form) {
+    refresh(p, ws, 0);
+  }
+
+  // Recomputes T and the hoop stress of particles [begin, p.size()) (halos whose values arrived).
+  void refresh(const ParticleSet& p, const HydroWorkspace& ws, std::size_t begin) {
+    const MomentumForm form = form_;
     const std::size_t n = p.size();
     for (int a = 0; a < D; ++a)
       for (int b = a; b < D; ++b) T[kSymIndex[a][b]].resize(n);
     if (RZ) hoop.resize(n);
 #pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = begin; i < n; ++i) {
       const double sigmaI = RZ ? p.areaDensity[i] : p.rho[i];
       const double scale = form == MomentumForm::Lagrangian
                                ? 1.0 / (p.omega[i] * p.rho[i] * sigmaI)
@@ -51,6 +57,9 @@ struct StressDivergence {
       if constexpr (RZ) hoop[i] = sigma[kZZ];
     }
   }
+
+ private:
+  MomentumForm form_;
 };
 
 // The Jaumann rate of the deviatoric stress and the equivalent strain rate of particle i from its
