@@ -355,9 +355,9 @@ void Simulation::evaluateDerivatives() {
       ws_.dSmoothedR[g] = ws_.dSmoothedR[s];
     }
   }
-  // The pairs are found from the halos' h, which the density pass may have changed: it comes
-  // first, alone (8 bytes a halo); the rest of their values travel during the force pass.
-  if (distributed) domain_.refreshHaloArray(p_.h, 1);
+  // The pairs are found from the halos' h: where the density pass sets it, it comes first,
+  // alone (8 bytes a halo); the rest of their values travel during the force pass.
+  if (distributed && densityPassSetsSmoothingLength(scene_.sph)) domain_.refreshHaloArray(p_.h, 1);
   switch (dim) {
     case 1: ws_.lists.findGhostGathers<1>(p_, ws_.grid, kKernelSupport);
             ws_.lists.buildPairs<1>(p_, kKernelSupport); break;

@@ -55,7 +55,7 @@ template <template <int> class K, int D, bool RZ>
 std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
   const SphOptions& sph = ws.sph;
   const bool summation = sph.density == DensityMethod::Summation;
-  const bool tiedH = summation && sph.smoothingLength == SmoothingLengthMethod::Neighbours;
+  const bool tiedH = densityPassSetsSmoothingLength(sph);
   const std::size_t nReal = p.numReal;
   const double etaD = powD<D>(sph.eta);
   const bool gradient = sph.viscosityReconstruction != ViscosityReconstruction::None;

@@ -22,6 +22,12 @@ namespace ejecta {
 // kernel-summed (or integrated) density is not positive, if any; the caller reports it.
 std::optional<std::size_t> runDensityPass(ParticleSet& p, HydroWorkspace& ws);
 
+// True when the pass sets h (summation density with the "neighbours" method: h iterated with
+// the density); otherwise h is the integrator's and the pass leaves it as it was.
+inline bool densityPassSetsSmoothingLength(const SphOptions& sph) {
+  return sph.density == DensityMethod::Summation && sph.smoothingLength == SmoothingLengthMethod::Neighbours;
+}
+
 // Smoothing length for the "neighbours" method from a density (continuity mode): h from the
 // particle's own mass and density.
 void setSmoothingFromDensity(ParticleSet& p, const HydroWorkspace& ws);

@@ -27,13 +27,13 @@ namespace ejecta {
 
 namespace {
 
-// Fluids: P/(Omega rho s) (Lagrangian) or P/rho (Interface) of particles [begin, p.size()),
-// real and ghost.
+// Fluids: P/(Omega rho s) (Lagrangian) or P/rho (Interface) of particles [begin, end), real
+// and ghost.
 template <bool RZ, MomentumForm Form>
-void fillPressureTerms(const ParticleSet& p, std::vector<double>& out, std::size_t begin) {
+void fillPressureTerms(const ParticleSet& p, std::vector<double>& out, std::size_t begin, std::size_t end) {
   out.resize(p.size());
 #pragma omp parallel for schedule(static)
-  for (std::size_t i = begin; i < p.size(); ++i) {
+  for (std::size_t i = begin; i < end; ++i) {
     const double sigma = RZ ? p.areaDensity[i] : p.rho[i];
     out[i] = Form == MomentumForm::Interface ? p.P[i] / p.rho[i]
                                              : p.P[i] / (p.omega[i] * p.rho[i] * sigma);
@@ -64,16 +64,19 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos)
   const bool continuityHere = kInterface && sph.density == DensityMethod::Continuity;
   const bool evolveAlpha = sph.viscositySwitch != ViscositySwitch::None;
 
-  MonaghanViscosity<D> viscosity(p, ws);
+  // The per-particle terms of every particle whose values are here: all of them, or all but
+  // the halos still in flight (theirs are computed when they arrive).
+  const std::size_t known = halos ? halos->first : p.size();
+  MonaghanViscosity<D> viscosity(p, ws, known);
   const ArtificialConductivity conduction(p, sph);
   std::vector<double> pressureTerm;
   std::optional<StressDivergence<D, RZ>> stress;
   std::optional<ArtificialStress<K, D, RZ>> artificialStress;
   if constexpr (Solid) {
-    stress.emplace(p, ws, Form);
-    artificialStress.emplace(p, ws);
+    stress.emplace(p, ws, Form, known);
+    artificialStress.emplace(p, ws, known);
   } else {
-    fillPressureTerms<RZ, Form>(p, pressureTerm, 0);
+    fillPressureTerms<RZ, Form>(p, pressureTerm, 0, known);
   }
   const bool artificial = Solid && artificialStress->enabled();
 
@@ -224,12 +227,12 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos)
   }
   halos->arrive();
   // The halos' own terms, from the values that arrived.
-  viscosity.refresh(p, halos->first);
+  viscosity.refresh(p, known, p.size());
   if constexpr (Solid) {
-    stress->refresh(p, ws, halos->first);
-    artificialStress->refresh(p, ws, halos->first);
+    stress->refresh(p, ws, known, p.size());
+    artificialStress->refresh(p, ws, known, p.size());
   } else {
-    fillPressureTerms<RZ, Form>(p, pressureTerm, halos->first);
+    fillPressureTerms<RZ, Form>(p, pressureTerm, known, p.size());
   }
   sumParticles.template operator()<true>(0, boundary.size(), boundary.data());
 }

@@ -21,7 +21,8 @@ namespace ejecta {
 template <int D>
 class MonaghanViscosity {
  public:
-  MonaghanViscosity(const ParticleSet& p, const HydroWorkspace& ws)
+  // Holds what it needs of particles [0, end); the rest (halos still in flight) come by refresh.
+  MonaghanViscosity(const ParticleSet& p, const HydroWorkspace& ws, std::size_t end)
       : cs_(p.cs.data()),
         alpha_(ws.sph.alpha),
         beta_(ws.sph.beta),
@@ -34,17 +35,17 @@ class MonaghanViscosity {
         throw std::logic_error("viscosity switch on but the particles carry no alpha");
       switchAlpha_ = p.alpha.data();  // ghosts carry their source's alpha (a halo field)
     }
-    refresh(p, 0);
+    refresh(p, 0, end);
     if (reconstruct_) gradient_ = ws.velocityGradient.data();
   }
 
-  // Recomputes what it holds of particles [begin, p.size()) (halos whose values arrived).
-  void refresh(const ParticleSet& p, std::size_t begin) {
+  // Computes what it holds of particles [begin, end) (halos whose values arrived).
+  void refresh(const ParticleSet& p, std::size_t begin, std::size_t end) {
     if (!balsara_) return;
     // Real and ghost particles share their source's div v and curl v.
     shearFactor_.resize(p.size());
 #pragma omp parallel for schedule(static)
-    for (std::size_t i = begin; i < p.size(); ++i) {
+    for (std::size_t i = begin; i < end; ++i) {
       const double div = std::abs(p.divv[i]);
       shearFactor_[i] = div / (div + p.curlv[i] + 1e-4 * p.cs[i] / p.h[i] + 1e-300);
     }

@@ -34,19 +34,21 @@ struct StressDivergence {
   std::array<std::vector<double>, 6> T;  // sigma scaled for the momentum form, in-plane only
   std::vector<double> hoop;              // RZ: effective sigma_theta_theta [Pa]
 
-  StressDivergence(const ParticleSet& p, const HydroWorkspace& ws, MomentumForm form) : form_(form) {
-    refresh(p, ws, 0);
+  // T of particles [0, end); the rest (halos still in flight) come by refresh.
+  StressDivergence(const ParticleSet& p, const HydroWorkspace& ws, MomentumForm form, std::size_t end)
+      : form_(form) {
+    refresh(p, ws, 0, end);
   }
 
-  // Recomputes T and the hoop stress of particles [begin, p.size()) (halos whose values arrived).
-  void refresh(const ParticleSet& p, const HydroWorkspace& ws, std::size_t begin) {
+  // Computes T and the hoop stress of particles [begin, end) (halos whose values arrived).
+  void refresh(const ParticleSet& p, const HydroWorkspace& ws, std::size_t begin, std::size_t end) {
     const MomentumForm form = form_;
     const std::size_t n = p.size();
     for (int a = 0; a < D; ++a)
       for (int b = a; b < D; ++b) T[kSymIndex[a][b]].resize(n);
     if (RZ) hoop.resize(n);
 #pragma omp parallel for schedule(static)
-    for (std::size_t i = begin; i < n; ++i) {
+    for (std::size_t i = begin; i < end; ++i) {
       const double sigmaI = RZ ? p.areaDensity[i] : p.rho[i];
       const double scale = form == MomentumForm::Lagrangian
                                ? 1.0 / (p.omega[i] * p.rho[i] * sigmaI)
