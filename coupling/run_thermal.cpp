@@ -208,6 +208,20 @@ void finishPass(const PassContext& c, PassLog& log, Pass pass,
   log.passes.push_back(std::move(pass));
 }
 
+// The asteroid's surface as occluder, at rank 0 (none elsewhere). A grid file that cannot be
+// meshed leaves the pass without one, noted, rather than failing it: a failure at rank 0 alone
+// would put its passes out of step with the other ranks'.
+const radiation::TriangleMesh* rootOccluder(const PassContext& c, PassLog& log, const Simulation& sim) {
+  if (!sim.ranks().isRoot()) return nullptr;
+  try {
+    return log.surface.current(c.occluderOptions);
+  } catch (const std::exception& e) {
+    log.notes.push_back(std::string("no occluder from ") + log.surface.latestFile + ": " + e.what());
+    log.surface.mesh = nullptr;
+    return nullptr;
+  }
+}
+
 // The emitters of every rank's hot particles, made at rank 0 (a collective; elsewhere none).
 // Only the particles at or above the threshold travel. A bad particle value is thrown on every
 // rank alike, so that the ranks' passes stay in step.
@@ -244,8 +258,7 @@ void snapshotPass(const PassContext& c, PassLog& log, const Simulation& sim, con
   pass.dir = dirName;
   try {
     const auto emitters = sampleEmitters(c, sim, pass.stats);
-    const radiation::TriangleMesh* occluder =
-        gridsNow && sim.ranks().isRoot() ? log.surface.current(c.occluderOptions) : nullptr;
+    const radiation::TriangleMesh* occluder = gridsNow ? rootOccluder(c, log, sim) : nullptr;
     pass.occluderTriangles = occluder ? occluder->triangleCount() : 0;
     const std::vector<radiation::PassFrame> frames(c.study->approach.times().size(),
                                                    {emitters.get(), occluder});
@@ -274,8 +287,7 @@ void advanceEvolvingPasses(const PassContext& c, PassLog& log, const Simulation&
         if (!now) now = sampleEmitters(c, sim, nowStats);
         if (nowStats.emitters >= open.largest.emitters) open.largest = nowStats;
         // (The occluder is rank 0's alone, as is the chain it feeds.)
-        const radiation::TriangleMesh* occluder =
-            sim.ranks().isRoot() ? log.surface.current(c.occluderOptions) : nullptr;
+        const radiation::TriangleMesh* occluder = rootOccluder(c, log, sim);
         open.emitters.push_back(now);
         open.occluders.push_back(occluder ? log.surface.mesh : nullptr);
       }
