@@ -109,11 +109,6 @@ void DistributedDomain::buildHalos(ParticleSet& p, double supportFactor) {
   stats_.haloSent = halos_.sent();
 }
 
-void DistributedDomain::refreshHalos(ParticleSet& p) const {
-  const Stopwatch watch(stats_.haloSeconds);
-  halos_.refresh(p, *comm_);
-}
-
 std::unique_ptr<Communicator::PendingExchange> DistributedDomain::startHaloRefresh(const ParticleSet& p) const {
   const Stopwatch watch(stats_.haloSeconds);
   return halos_.startRefresh(p, *comm_);

@@ -57,9 +57,8 @@ class DistributedDomain {
 
   // The halo exchange (sim/parallel/halo_exchange.hpp), timed into stats().
   void buildHalos(ParticleSet& p, double supportFactor);
-  void refreshHalos(ParticleSet& p) const;
-  // refreshHalos in two halves (HaloExchange::startRefresh), timed alike: the time stats() shows
-  // is what the overlap did not hide.
+  // The refresh in two halves (HaloExchange::startRefresh), timed: the time stats() shows is
+  // what the overlap did not hide.
   std::unique_ptr<Communicator::PendingExchange> startHaloRefresh(const ParticleSet& p) const;
   void finishHaloRefresh(ParticleSet& p, Communicator::PendingExchange& pending) const;
   void refreshHaloArray(std::vector<double>& values, int stride) const;
