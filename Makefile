@@ -27,12 +27,14 @@ test: build
 verification: build
 	cd $(BUILD) && ctest --output-on-failure -L verification
 
-# Each under a minute on 2 cores: SPH hydro (3D Sedov), particles to grids and VDB files (3D and
+# Each under a minute on 2 cores: SPH hydro (3D Sedov; 2D Sedov with global against individual
+# time steps), particles to grids and VDB files (3D and
 # RZ revolved), the impact scene's solid-mechanics overhead, ray-cast view factors, the thermal
 # chain with and without the asteroid as occluder, the wall solvers, and off-screen rendering;
 # throughput per core at 1 and 2 threads where it scales.
 bench: build
 	$(BUILD)/bench/ejecta_bench_sedov --n 40
+	$(BUILD)/bench/ejecta_bench_time_steps --problem sedov_2d --set "bodies[0].spacing=0.01" --set "energy_deposits[0].width=0.02"
 	$(BUILD)/bench/ejecta_bench_fields --threads-sweep
 	$(BUILD)/bench/ejecta_bench_fields --geometry rz --threads-sweep
 	$(BUILD)/bench/ejecta_bench_impact --threads-sweep

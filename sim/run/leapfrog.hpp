@@ -28,6 +28,12 @@ class Leapfrog {
   // h tied to the density sets h): it is not advanced.
   void hold(const std::string& field) { held_.insert(field); }
   void setCaps(const std::string& field, CapSource caps) { caps_[field] = std::move(caps); }
+  bool holds(const std::string& field) const { return held_.count(field) > 0; }
+  // The cap source of a Cap-limited field, or nullptr (individual steps take the caps from here).
+  const CapSource* caps(const std::string& field) const {
+    const auto at = caps_.find(field);
+    return at == caps_.end() ? nullptr : &at->second;
+  }
 
   // First half kick, drift, and the prediction of every evolved field to the end of the step.
   void predict(ParticleSet& p, int dimension, double dt);

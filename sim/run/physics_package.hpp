@@ -12,13 +12,20 @@
 //   limitKicks -> [leapfrog predict] -> afterDrift -> [pair passes, equation of state]
 //   -> updateState -> [force pass] -> evaluateDerivatives -> [leapfrog correct, equation of
 //   state] -> updateState -> finalize -> timestep
+// With individual time steps (sim/run/time_bins.hpp) the same cycle runs at every sub-step on
+// every particle's predicted state, the derivative hooks and finalize acting only on
+// PackageContext::active.
 // initialise() and a delayed deposit's firing evaluate a state without stepping: updateState ->
 // evaluateDerivatives -> timestep only. A package that keeps state between steps belongs to one
 // Simulation.
+#include <algorithm>
+#include <cstdint>
 #include <limits>
+#include <span>
 #include <string>
 
 #include "sim/solid/materials.hpp"
+#include "sim/state/particle_mask.hpp"
 #include "sim/state/particles.hpp"
 
 namespace ejecta {
@@ -30,6 +37,10 @@ struct PackageContext {
   const MaterialTable& materials;
   int dimension;  // of the particle positions: 1, 2 (planar and RZ) or 3
   double time;    // of the state the hook sees [s]
+  // Individual time steps (sim/run/time_bins.hpp): the particles whose step ends at `time`, the
+  // only ones evaluateDerivatives and finalize may change (the others keep the rates their step
+  // started with, and their state is a prediction). nullptr: every particle (global steps).
+  const ParticleMask* active = nullptr;
 };
 
 class PhysicsPackage {
@@ -55,6 +66,15 @@ class PhysicsPackage {
   // The longest step the package allows from the present state (infinity: no limit).
   virtual double timestep(const ParticleSet&, const PackageContext&) const {
     return std::numeric_limits<double>::infinity();
+  }
+  // Individual time steps: lowers dt[k] to the longest step particle which[k] allows (the
+  // particles whose step ends now). The default applies timestep() to each, which is safe but
+  // makes every particle wait for the package's most demanding one.
+  virtual void particleTimesteps(const ParticleSet& p, const PackageContext& c,
+                                 std::span<const std::size_t> which, std::span<double> dt) const {
+    (void)which;
+    const double limit = timestep(p, c);
+    for (double& d : dt) d = std::min(d, limit);
   }
 };
 

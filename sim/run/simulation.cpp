@@ -14,6 +14,7 @@
 #include "sim/setup/bodies.hpp"
 #include "sim/sph/density_pass.hpp"
 #include "sim/run/packages/programmed_burn_package.hpp"
+#include "sim/run/timestep_criteria.hpp"
 #include "sim/run/packages/strength_package.hpp"
 #include "sim/run/packages/viscosity_switch_package.hpp"
 #include "sim/solid/solid_state.hpp"
@@ -147,6 +148,13 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
   // leapfrog advances them only when the scene integrates them.
   if (scene_.sph.density != DensityMethod::Continuity) leapfrog_.hold("density");
   if (scene_.sph.smoothingLength != SmoothingLengthMethod::Seed) leapfrog_.hold("smoothing_length");
+  if (scene_.time.stepping == Stepping::Individual) {
+    if (domain_.distributed())
+      throw SimulationError("scene '" + scene_.name + "': individual time steps ([time] stepping "
+                            "= \"individual\") run on one rank so far; use stepping = "
+                            "\"global\" on " + std::to_string(domain_.comm().size()) + " ranks");
+    bins_.emplace(scene_.time.limiterFactor, scene_.time.dtMax);
+  }
   // A distributed run: the flaws are drawn from the whole body (each rank keeps the table, found
   // by particle id, so flaws travel with their particle; such scenes are built whole on every
   // rank, bodies.hpp), then each rank keeps its share.
@@ -177,10 +185,18 @@ void Simulation::initialise() {
   if (scene_.sph.density == DensityMethod::Continuity &&
       scene_.sph.smoothingLength == SmoothingLengthMethod::Neighbours)
     setSmoothingFromDensity(p_, ws_);
+  if (bins_) bins_->registerFields(p_, leapfrog_, scene_.sph.density == DensityMethod::Summation,
+                                   densityPassSetsSmoothingLength(scene_.sph));
   evaluateDerivatives();
 
   computeNextTimestep();
   checkHealth(dtNext_);
+  if (bins_) {
+    std::vector<std::size_t> all(p_.numReal);
+    std::iota(all.begin(), all.end(), std::size_t{0});
+    ownTimesteps(all);
+    bins_->keepEvaluation(p_, ws_.velocityGradient);
+  }
 }
 
 void Simulation::resume(double time, long step, double dtNext) {
@@ -190,6 +206,17 @@ void Simulation::resume(double time, long step, double dtNext) {
   stateTime_ = time;
   step_ = step;
   dtNext_ = dtNext;
+  if (bins_) {
+    // At a synchronisation point: each particle's own limit and its last evaluation were stored.
+    bins_->registerFields(p_, leapfrog_, scene_.sph.density == DensityMethod::Summation,
+                          densityPassSetsSmoothingLength(scene_.sph));
+    if (scene_.sph.viscosityReconstruction != ViscosityReconstruction::None)
+      ws_.velocityGradient.assign(9 * p_.numReal, 0.0);
+    bins_->restoreEvaluation(p_, ws_.velocityGradient);
+    std::vector<double>& own = bins_->ownSteps(p_);
+    for (std::size_t i = 0; i < p_.numReal; ++i)
+      if (!(own[i] > 0.0)) own[i] = dtNext;  // a snapshot without them: the global step
+  }
 }
 
 double Simulation::meanNeighbours() const {
@@ -289,6 +316,22 @@ void Simulation::sortForLocality() {
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
   p_.permute(order);
+  if (!bins_) return;
+  // Individual steps: the workspace's per-particle results of the last evaluation are those the
+  // particles not evaluated next keep; they follow their particles.
+  const std::size_t n = p_.numReal;
+  if (ws_.velocityGradient.size() >= 9 * n) {
+    std::vector<double> moved(9 * n);
+    for (std::size_t i = 0; i < n; ++i)
+      std::copy_n(ws_.velocityGradient.begin() + static_cast<std::ptrdiff_t>(9 * order[i]), 9,
+                  moved.begin() + static_cast<std::ptrdiff_t>(9 * i));
+    ws_.velocityGradient = std::move(moved);
+  }
+  if (ws_.neighbourCount.size() == n) {
+    std::vector<std::uint32_t> moved(n);
+    for (std::size_t i = 0; i < n; ++i) moved[i] = ws_.neighbourCount[order[i]];
+    ws_.neighbourCount = std::move(moved);
+  }
 }
 
 void Simulation::evaluateEquationOfState() {
@@ -305,7 +348,7 @@ void Simulation::evaluateEquationOfState() {
   for (const auto& package : packages_) package->updateState(p_, context);
 }
 
-void Simulation::evaluateDerivatives() {
+void Simulation::evaluateDerivatives(const std::vector<std::size_t>* active) {
   const int dim = ws_.dim;
   const bool distributed = domain_.distributed();
   const Communicator& ranks = domain_.comm();
@@ -321,7 +364,7 @@ void Simulation::evaluateDerivatives() {
     ws_.grid.build(p_, dim, kKernelSupport * hs[hs.size() / 2]);
     ws_.lists.reset(p_.size(), std::max(ws_.numThreads, omp_get_max_threads()));
     std::vector<double> hBefore(p_.h.begin(), p_.h.begin() + static_cast<std::ptrdiff_t>(p_.numReal));
-    const std::optional<std::size_t> bad = runDensityPass(p_, ws_);
+    const std::optional<std::size_t> bad = runDensityPass(p_, ws_, active);
     stopIfAnyRankFailed(bad ? failureMessage(*bad, "no positive density from the density pass (an "
                                                    "isolated particle, or the continuity density "
                                                    "of a particle driven to zero)")
@@ -358,7 +401,15 @@ void Simulation::evaluateDerivatives() {
   // The pairs are found from the halos' h: where the density pass sets it, it comes first,
   // alone (8 bytes a halo); the rest of their values travel during the force pass.
   if (distributed && densityPassSetsSmoothingLength(scene_.sph)) domain_.refreshHaloArray(p_.h, 1);
-  switch (dim) {
+  if (active) {
+    // The pairs of the evaluated particles alone, from the widest kernels reaching each cell.
+    ws_.grid.recordReach(p_, kKernelSupport);
+    switch (dim) {
+      case 1: ws_.lists.buildActivePairs<1>(p_, ws_.grid, kKernelSupport, *active); break;
+      case 2: ws_.lists.buildActivePairs<2>(p_, ws_.grid, kKernelSupport, *active); break;
+      default: ws_.lists.buildActivePairs<3>(p_, ws_.grid, kKernelSupport, *active); break;
+    }
+  } else switch (dim) {
     case 1: ws_.lists.findGhostGathers<1>(p_, ws_.grid, kKernelSupport);
             ws_.lists.buildPairs<1>(p_, kKernelSupport); break;
     case 2: ws_.lists.findGhostGathers<2>(p_, ws_.grid, kKernelSupport);
@@ -367,7 +418,7 @@ void Simulation::evaluateDerivatives() {
              ws_.lists.buildPairs<3>(p_, kKernelSupport); break;
   }
   if (!distributed) {
-    runForcePass(p_, ws_);
+    runForcePass(p_, ws_, nullptr, active);
   } else {
     // The halos' values are sent now and arrive while the force pass sums the particles that
     // have no halo neighbour (sim/sph/hydro_force.hpp: the same sums as waiting first).
@@ -383,9 +434,9 @@ void Simulation::evaluateDerivatives() {
         domain_.refreshHaloArray(ws_.dSmoothedR, 1);
       }
     };
-    runForcePass(p_, ws_, &arrival);
+    runForcePass(p_, ws_, &arrival, active);
   }
-  const PackageContext context = packageContext();
+  const PackageContext context = packageContext(active ? &activeMask_ : nullptr);
   for (const auto& package : packages_) package->evaluateDerivatives(p_, context);
 }
 
@@ -394,15 +445,10 @@ void Simulation::computeNextTimestep() {
   double dtCourant = std::numeric_limits<double>::max();
   double dtForce = std::numeric_limits<double>::max();
   for (std::size_t i = 0; i < p_.numReal; ++i) {
-    const double h = p_.h[i], c = p_.cs[i], div = std::abs(p_.divv[i]);
-    // Seed eq. (1.8), with |div v| (the printed h div v can be negative) and the denominator
-    // floored at c so that alpha = 0 still respects the sound-crossing limit.
-    const double denom =
-        h * div + std::max(1.2 * (sph.alpha * c + sph.beta * h * div), c);
-    if (denom > 0.0) dtCourant = std::min(dtCourant, sph.courant * h / denom);
+    dtCourant = std::min(dtCourant, courantTimestep(sph, p_.h[i], p_.cs[i], p_.divv[i]));
     double a2 = 0.0;
     for (int d = 0; d < 3; ++d) a2 += p_.a[d][i] * p_.a[d][i];
-    if (a2 > 0.0) dtForce = std::min(dtForce, sph.forceFactor * std::sqrt(h / std::sqrt(a2)));
+    dtForce = std::min(dtForce, forceTimestep(sph, p_.h[i], a2));
   }
   // The packages' votes (the crack-growth limit among them).
   double dt = std::min(dtCourant, dtForce);
@@ -529,7 +575,9 @@ bool Simulation::fireDueDeposits() {
 }
 
 void Simulation::step(double limit) {
+  if (bins_) return stepIndividually(limit);
   ++stateVersion_;
+  globalUpdates_ += p_.numReal;
   if (step_ % kSortInterval == 0) {
     // Particles that crossed into another rank's range move there (new ranges when the work is
     // out of balance), then each rank orders its own for locality.

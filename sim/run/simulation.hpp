@@ -7,8 +7,9 @@
 // equation of state -> force pass; then the time-step criteria and a health check.
 #include <array>
 #include <functional>
-#include <memory>
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -19,6 +20,7 @@
 #include "sim/state/conservation.hpp"
 #include "sim/sph/hydro_workspace.hpp"
 #include "sim/run/leapfrog.hpp"
+#include "sim/run/time_bins.hpp"
 #include "sim/run/physics_package.hpp"
 #include "sim/run/packages/fracture_package.hpp"
 #include "sim/solid/materials.hpp"
@@ -73,7 +75,11 @@ class Simulation {
   // Particles that failed (principal stress or erosion) in the last step.
   std::size_t lastFailures() const { return fracture_ ? fracture_->lastFailures() : 0; }
 
-  // Advances one step of min(next time step, limit - time, next delayed deposit - time). A
+  // Individual steps: advances one sub-step, to where the next particles' steps end. When every
+  // particle is synchronised a block begins that ends at min(limit, the next delayed deposit); a
+  // smaller limit before the block ends is an error (std::logic_error): the run's outputs are its
+  // limits, and each block ends on one.
+  // Global steps: advances one step of min(next time step, limit - time, next delayed deposit - time). A
   // delayed deposit due at the step's start (time >= its time) fires first: its energy is added,
   // the derivatives and the time step are recomputed from the new state, and the step takes that
   // time step. Throws SimulationError on a bad state (the particles then hold the offending
@@ -90,6 +96,12 @@ class Simulation {
   long stepCount() const { return step_; }
   double dtNext() const { return dtNext_; }
   double lastDt() const { return lastDt_; }
+  // Individual time steps ([time] stepping = "individual"): whether every particle is at time()
+  // (always with global steps), and the particle-steps taken so far (with global steps, the
+  // particles times the steps).
+  bool individualSteps() const { return bins_.has_value(); }
+  bool synchronised() const { return !bins_ || bins_->synchronised(); }
+  std::uint64_t particleUpdates() const;
   const Scene& scene() const { return scene_; }
   // This rank's particles (all of them on one rank).
   const ParticleSet& particles() const { return p_; }
@@ -122,7 +134,9 @@ class Simulation {
   const ParticleSet& particlesNear(std::span<const std::array<double, 3>> points);
 
  private:
-  void evaluateDerivatives();
+  // Ghosts, halos, the density pass, the equation of state and the force pass; with `active`
+  // (individual steps) the passes and the packages' derivatives for those particles only.
+  void evaluateDerivatives(const std::vector<std::size_t>* active = nullptr);
   void evaluateEquationOfState();
   void computeNextTimestep();
   void checkHealth(double dt) const;
@@ -141,7 +155,18 @@ class Simulation {
   double nextDepositTime() const;
   bool fired(std::size_t deposit) const;
   // What the packages' hooks read besides the particles, at the evaluated state's time.
-  PackageContext packageContext() const { return {materials_, ws_.dim, stateTime_}; }
+  PackageContext packageContext(const ParticleMask* active = nullptr) const {
+    return {materials_, ws_.dim, stateTime_, active};
+  }
+  // Individual time steps (sim/run/individual_steps.cpp).
+  void stepIndividually(double limit);
+  void startBlock(double limit);
+  // Each listed particle's own step limit (the hydrodynamic criteria and the packages' votes)
+  // into the bins' dt_own; returns the smallest over every rank.
+  double ownTimesteps(const std::vector<std::size_t>& which);
+  // After the listed particles' steps ended: their new bins (the limiter's floor from their
+  // neighbours) and the wake-up of neighbours on too long a step.
+  void rebin(const std::vector<std::size_t>& ended);
 
   Scene scene_;
   DistributedDomain domain_;
@@ -166,10 +191,13 @@ class Simulation {
   // predicted end of the step).
   double stateTime_ = 0.0;
   Leapfrog leapfrog_;  // and its half-step state
+  std::optional<TimeBins> bins_;  // individual time steps; empty: global steps
+  ParticleMask activeMask_;       // the particles of the present sub-step
   std::vector<std::shared_ptr<PhysicsPackage>> packages_;
   std::shared_ptr<FracturePackage> fracture_;  // also in packages_; owns the flaws
   std::vector<DepositFiring> firings_;
   std::vector<std::int64_t> bodyFirstIds_;  // for delayed body deposits (bodyFirstIds)
+  std::uint64_t globalUpdates_ = 0;         // particle-steps of global steps
 };
 
 }  // namespace ejecta

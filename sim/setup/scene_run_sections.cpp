@@ -168,6 +168,15 @@ void readTime(const TableReader& root, TimeOptions& time) {
   if (time.dtMax > 0.0) r.check(time.dtMin < time.dtMax, "dt_min", "must be below dt_max");
   time.maxSteps = r.optInteger("max_steps").value_or(time.maxSteps);
   r.check(time.maxSteps >= 0, "max_steps", "must not be negative; 0 = unlimited");
+  time.stepping = r.optEnum<Stepping>("stepping", {{"global", Stepping::Global},
+                                                    {"individual", Stepping::Individual}})
+                      .value_or(time.stepping);
+  if (const auto factor = r.optInteger("limiter_factor")) {
+    const long f = *factor;
+    r.check(f == 0 || (f >= 2 && f <= 1024 && (f & (f - 1)) == 0), "limiter_factor",
+            "must be a power of two from 2 to 1024, or 0 (no limiter), not " + std::to_string(f));
+    time.limiterFactor = static_cast<int>(f);
+  }
 }
 
 void readOutput(const TableReader& root, OutputOptions& out) {

@@ -122,7 +122,13 @@ std::vector<SceneTable> runTables() {
         quantity("dt_max", s, "0", "largest step; 0 = unlimited"),
         quantity("dt_min", s, "0",
                  "a step below this stops the run; 0 = 1e-12 t_end; below dt_max"),
-        integer("max_steps", "0", "most steps; 0 = unlimited")}},
+        integer("max_steps", "0", "most steps; 0 = unlimited (sub-steps with individual steps)"),
+        choice("stepping", {"global", "individual"}, "\"global\"",
+               "one step for all particles, or each on its own power-of-two time bin "
+               "(docs/time_steps.md)"),
+        integer("limiter_factor", "2",
+                "individual steps: most a step may exceed a neighbour's, a power of two; 0 = "
+                "no limiter")}},
       {"output",
        "`[output]`",
        "",

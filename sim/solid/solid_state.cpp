@@ -114,11 +114,13 @@ void applySolidSoundSpeed(ParticleSet& p, const MaterialTable& materials) {
   }
 }
 
-void applyPlasticity(ParticleSet& p, const MaterialTable& materials, bool accumulate) {
+void applyPlasticity(ParticleSet& p, const MaterialTable& materials, bool accumulate,
+                     const ParticleMask* only) {
   const int nc = p.stressComponents();
   if (nc == 0) return;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.numReal; ++i) {
+    if (!selected(only, i)) continue;
     const Material& mat = materials[static_cast<std::size_t>(p.material[i])];
     if (!mat.strength) continue;
     const StrengthModel& s = *mat.strength;
@@ -137,10 +139,11 @@ void applyPlasticity(ParticleSet& p, const MaterialTable& materials, bool accumu
 }
 
 void computeCrackGrowth(ParticleSet& p, const MaterialTable& materials, const FlawSet& flaws,
-                        int dimension) {
+                        int dimension, const ParticleMask* only) {
   if (!p.hasFracture()) return;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.numReal; ++i) {
+    if (!selected(only, i)) continue;
     p.dcrack_dt[i] = 0.0;
     const Material& mat = materials[static_cast<std::size_t>(p.material[i])];
     if (mat.fracture.kind != FractureKind::GradyKipp || p.damage(i) >= 1.0) continue;
@@ -181,11 +184,23 @@ double crackGrowthTimestep(const ParticleSet& p, const MaterialTable& materials)
   return dt;
 }
 
-std::size_t applyFailure(ParticleSet& p, const MaterialTable& materials) {
+void crackGrowthTimesteps(const ParticleSet& p, const MaterialTable& materials,
+                          std::span<const std::size_t> which, std::span<double> dt) {
+  if (!p.hasFracture()) return;
+  for (std::size_t k = 0; k < which.size(); ++k) {
+    const std::size_t i = which[k];
+    if (!(p.dcrack_dt[i] > 0.0)) continue;
+    const FractureModel& f = materials[static_cast<std::size_t>(p.material[i])].fracture;
+    dt[k] = std::min(dt[k], crackStepLimit(p.dcrack_dt[i], f.maxCrackIncrement));
+  }
+}
+
+std::size_t applyFailure(ParticleSet& p, const MaterialTable& materials, const ParticleMask* only) {
   if (!p.hasFracture()) return 0;
   std::size_t failed = 0;
 #pragma omp parallel for schedule(static) reduction(+ : failed)
   for (std::size_t i = 0; i < p.numReal; ++i) {
+    if (!selected(only, i)) continue;
     if (p.crack[i] >= 1.0) continue;
     const FractureModel& f = materials[static_cast<std::size_t>(p.material[i])].fracture;
     bool fails = p.stressComponents() > 0 && p.totalStrain[i] > f.erosionStrain;

@@ -3,10 +3,12 @@
 // damage reduction of tension, plasticity (radial return), Grady-Kipp crack growth rates, and
 // failure by principal stress or erosion. Each loops over the real particles once.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "sim/solid/materials.hpp"
 #include "sim/solid/weibull_flaws.hpp"
+#include "sim/state/particle_mask.hpp"
 #include "sim/state/particles.hpp"
 #include "sim/state/tensor.hpp"
 
@@ -41,11 +43,12 @@ void applySolidSoundSpeed(ParticleSet& p, const MaterialTable& materials);
 // `accumulatePlasticStrain` the equivalent plastic strain grows by (1 - D) times the returned
 // increment: the intact volume fraction yields, the cracked fraction D slides on its cracks and
 // adds none, so fully damaged material (no shear) gains no plastic strain (docs/materials.md).
-void applyPlasticity(ParticleSet& p, const MaterialTable& materials, bool accumulatePlasticStrain);
+void applyPlasticity(ParticleSet& p, const MaterialTable& materials, bool accumulatePlasticStrain,
+                     const ParticleMask* only = nullptr);
 
 // Grady-Kipp rates d(crack)/dt of the real particles (0 for other materials).
 void computeCrackGrowth(ParticleSet& p, const MaterialTable& materials, const FlawSet& flaws,
-                        int dimension);
+                        int dimension, const ParticleMask* only = nullptr);
 
 // Grady-Kipp caps (n_act / n_total)^(1/3) of the crack fraction of every real particle whose
 // crack grows (dcrack_dt > 0), from the flaws its present state activates; 1 for the others.
@@ -56,10 +59,14 @@ std::vector<double> crackCaps(const ParticleSet& p, const MaterialTable& materia
 // The longest time step over which no real particle's crack fraction grows, at its present
 // rate, by more than its material's maxCrackIncrement (infinity when no crack grows).
 double crackGrowthTimestep(const ParticleSet& p, const MaterialTable& materials);
+// The same limit per particle: lowers dt[k] for particle which[k] (individual time steps).
+void crackGrowthTimesteps(const ParticleSet& p, const MaterialTable& materials,
+                          std::span<const std::size_t> which, std::span<double> dt);
 
 // Principal-stress failure and erosion: sets the damage of failing particles to 1 (and their
 // tension to 0). Returns the number of particles that failed now.
-std::size_t applyFailure(ParticleSet& p, const MaterialTable& materials);
+std::size_t applyFailure(ParticleSet& p, const MaterialTable& materials,
+                         const ParticleMask* only = nullptr);
 
 // The full effective stress tensor of particle i: -P I + (1 - D) S (tension positive), or
 // -P I + S when the material's yield surface carries the damage (Collins). Inline: the force

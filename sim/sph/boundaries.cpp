@@ -65,6 +65,11 @@ Boundaries::Boundaries(Geometry geometry, const DomainBounds& domain)
 }
 
 void Boundaries::confine(ParticleSet& p, Vec3Array* alsoFlip) const {
+  if (!alsoFlip) return confine(p, std::function<void(int, std::size_t)>());
+  confine(p, [alsoFlip](int d, std::size_t i) { (*alsoFlip)[d][i] = -(*alsoFlip)[d][i]; });
+}
+
+void Boundaries::confine(ParticleSet& p, const std::function<void(int, std::size_t)>& reflected) const {
   for (int d = 0; d < dim_; ++d) {
     const AxisBounds& b = domain_[d];
     if (!b.bounded) continue;
@@ -74,7 +79,7 @@ void Boundaries::confine(ParticleSet& p, Vec3Array* alsoFlip) const {
     auto reflect = [&](std::size_t i, double wall) {
       x[i] = 2.0 * wall - x[i];
       v[i] = -v[i];
-      if (alsoFlip) (*alsoFlip)[d][i] = -(*alsoFlip)[d][i];
+      if (reflected) reflected(d, i);
     };
     for (std::size_t i = 0; i < p.numReal; ++i) {
       if (x[i] < b.min) {

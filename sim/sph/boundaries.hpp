@@ -5,6 +5,7 @@
 // rebuilt every step after the drift and carry copies of their sources' state.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "sim/parallel/communicator.hpp"
@@ -22,6 +23,9 @@ class Boundaries {
   // that crossed a wall or the axis during the drift. `alsoFlip`, when given, is a second
   // velocity array (the leapfrog's half-step velocity) reflected together with p.v.
   void confine(ParticleSet& p, Vec3Array* alsoFlip = nullptr) const;
+  // The same, calling reflected(axis, i) for each particle i reflected across `axis` (individual
+  // time steps flip the particle's stored start velocity and acceleration there too).
+  void confine(ParticleSet& p, const std::function<void(int, std::size_t)>& reflected) const;
 
   // Drops old ghosts and adds images of the real particles lying within the ghost layer of each
   // wall and periodic face (and of earlier ghosts, so corners are covered). The layer of a face

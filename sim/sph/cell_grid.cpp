@@ -59,6 +59,41 @@ void CellGrid::build(const ParticleSet& p, int dim, double cellSize) {
   }
 }
 
+void CellGrid::recordReach(const ParticleSet& p, double support) {
+  const std::size_t numCells = cellStart_.size() - 1;
+  std::vector<double> own(numCells, 0.0);  // the widest support of the particles in each cell
+  for (std::size_t c = 0; c < numCells; ++c)
+    for (std::uint32_t k = cellStart_[c]; k < cellStart_[c + 1]; ++k)
+      own[c] = std::max(own[c], support * p.h[sorted_[k]]);
+  // Spread each cell's support over the cells it may reach (a cube of them: conservative).
+  reach_.assign(numCells, 0.0);
+  long at[3];
+  for (std::size_t c = 0; c < numCells; ++c) {
+    if (own[c] == 0.0) continue;
+    at[0] = static_cast<long>(c) % cells_[0];
+    at[1] = (static_cast<long>(c) / cells_[0]) % cells_[1];
+    at[2] = static_cast<long>(c) / (cells_[0] * cells_[1]);
+    const long span = static_cast<long>(std::ceil(own[c] / cellSize_));
+    long lo[3], hi[3];
+    for (int d = 0; d < 3; ++d) {
+      lo[d] = d < dim_ ? std::max(at[d] - span, 0L) : 0;
+      hi[d] = d < dim_ ? std::min(at[d] + span, cells_[d] - 1) : 0;
+    }
+    for (long z = lo[2]; z <= hi[2]; ++z)
+      for (long y = lo[1]; y <= hi[1]; ++y)
+        for (long x = lo[0]; x <= hi[0]; ++x) {
+          double& r = reach_[static_cast<std::size_t>((z * cells_[1] + y) * cells_[0] + x)];
+          r = std::max(r, own[c]);
+        }
+  }
+}
+
+double CellGrid::reachInto(const double* point) const {
+  long c = 0;
+  for (int d = dim_ - 1; d >= 0; --d) c = c * cells_[d] + cellCoord(point[d], d);
+  return reach_[static_cast<std::size_t>(c)];
+}
+
 std::vector<std::uint64_t> CellGrid::cellKeys(const ParticleSet& p, std::size_t count) const {
   std::vector<std::uint64_t> keys(count);
   for (std::size_t i = 0; i < count; ++i) {

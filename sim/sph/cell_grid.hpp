@@ -22,6 +22,13 @@ class CellGrid {
   void query(const ParticleSet& p, const double* point, double radius,
              std::vector<std::uint32_t>& out) const;
 
+  // For finding the pairs of a few particles without every particle's gather list (individual
+  // time steps): notes for every cell the widest support `support` x h_j of any particle j whose
+  // support may reach into it. A particle j can reach a point only if reachInto(point) >=
+  // support h_j, so a query of that radius finds every such j. Call after h is final.
+  void recordReach(const ParticleSet& p, double support);
+  double reachInto(const double* point) const;
+
   // Cell index of each real particle under this grid; used to reorder particles for locality.
   std::vector<std::uint64_t> cellKeys(const ParticleSet& p, std::size_t count) const;
 
@@ -35,6 +42,7 @@ class CellGrid {
   std::vector<std::uint32_t> cellStart_;  // size numCells + 1
   std::vector<std::uint32_t> sorted_;     // particle indices ordered by cell
   std::vector<double> sortedPos_[3];      // positions in cell order, for cache-friendly queries
+  std::vector<double> reach_;             // per cell: recordReach's widest support reaching it
 
   long cellCoord(double x, int d) const;
 };

@@ -52,7 +52,8 @@ void kernelSums(const ParticleSet& p, const std::vector<std::uint32_t>& cand,
 }
 
 template <template <int> class K, int D, bool RZ>
-std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
+std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
+                                           const std::vector<std::size_t>* active) {
   const SphOptions& sph = ws.sph;
   const bool summation = sph.density == DensityMethod::Summation;
   const bool tiedH = densityPassSetsSmoothingLength(sph);
@@ -61,6 +62,7 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
   const bool gradient = sph.viscosityReconstruction != ViscosityReconstruction::None;
   const bool monotone = sph.viscosityReconstruction == ViscosityReconstruction::Monotone;
   std::size_t failedIndex = nReal;  // lowest failing index (a min reduction: schedule-proof)
+  const std::size_t count = active ? active->size() : nReal;
 
 #pragma omp parallel reduction(min : failedIndex)
   {
@@ -72,7 +74,8 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
     // Dynamic chunks balance the uneven cost (large-h particles, Newton iterations); each
     // particle is computed by one thread alone, so results do not depend on the schedule.
 #pragma omp for schedule(dynamic, 256)
-    for (std::size_t i = 0; i < nReal; ++i) {
+    for (std::size_t at = 0; at < count; ++at) {
+      const std::size_t i = active ? (*active)[at] : at;
       const double xi[3] = {p.x[0][i], p.x[1][i], p.x[2][i]};
       const double mi = p.mass[i];
       const double hStart = p.h[i];
@@ -229,16 +232,32 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws) {
 
 }  // namespace
 
-std::optional<std::size_t> runDensityPass(ParticleSet& p, HydroWorkspace& ws) {
+std::optional<std::size_t> runDensityPass(ParticleSet& p, HydroWorkspace& ws,
+                                          const std::vector<std::size_t>* active) {
   ws.neighbourCount.resize(p.numReal);
-  if (ws.sph.viscosityReconstruction != ViscosityReconstruction::None)
-    ws.velocityGradient.assign(9 * p.size(), 0.0);  // components beyond D stay 0
-  if (ws.geometry == Geometry::Axisymmetric) {
+  const bool rz = ws.geometry == Geometry::Axisymmetric;
+  if (ws.sph.viscosityReconstruction != ViscosityReconstruction::None) {
+    if (!active) ws.velocityGradient.assign(9 * p.size(), 0.0);  // components beyond D stay 0
+    else ws.velocityGradient.resize(9 * p.size(), 0.0);  // the others keep their last tensor
+  }
+  if (rz) {
     ws.smoothedR.resize(p.size());
     ws.dSmoothedR.resize(p.size());
   }
+  if (active && rz) {
+    // The particles the pass skips keep their density and h as predicted; their smoothed radius
+    // and ring area density follow from those at the present position.
+    std::vector<unsigned char> inPass(p.numReal, 0);
+    for (std::size_t i : *active) inPass[i] = 1;
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < p.numReal; ++i) {
+      if (inPass[i]) continue;
+      ws.axis->smoothedRadius(p.x[0][i], p.h[i], ws.smoothedR[i], ws.dSmoothedR[i]);
+      p.areaDensity[i] = 2.0 * std::numbers::pi * ws.smoothedR[i] * p.rho[i];
+    }
+  }
   return dispatchHydro(ws, [&]<template <int> class K, int D, bool RZ>() {
-    return densityPassImpl<K, D, RZ>(p, ws);
+    return densityPassImpl<K, D, RZ>(p, ws, active);
   });
 }
 

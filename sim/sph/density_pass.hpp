@@ -10,7 +10,9 @@
 //              summation by Newton iteration (Springel & Hernquist 2002; Price 2012, sec. 2.4);
 //              omega_i = 1 + h_i / (d rho_i) sum_j m_j dW/dh.
 // Smoothing length "seed": dh/dt = -h/(rho d) d rho/dt (eq. 1.3), applied with relaxation theta.
+#include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "sim/sph/hydro_workspace.hpp"
 #include "sim/state/particles.hpp"
@@ -20,7 +22,10 @@ namespace ejecta {
 // Requires: ghosts made (positions, velocities, masses, h). Produces the quantities above for
 // real particles and fills ws.lists' gather lists. Returns the lowest index of a particle whose
 // kernel-summed (or integrated) density is not positive, if any; the caller reports it.
-std::optional<std::size_t> runDensityPass(ParticleSet& p, HydroWorkspace& ws);
+// With `active` (individual time steps) only the listed particles are summed; the others keep
+// their values (RZ: their smoothed radius and area density are brought to their present state).
+std::optional<std::size_t> runDensityPass(ParticleSet& p, HydroWorkspace& ws,
+                                          const std::vector<std::size_t>* active = nullptr);
 
 // True when the pass sets h (summation density with the "neighbours" method: h iterated with
 // the density); otherwise h is the integrator's and the pass leaves it as it was.

@@ -41,23 +41,28 @@ void fillPressureTerms(const ParticleSet& p, std::vector<double>& out, std::size
 }
 
 // The real particles with a pair among the halos [first, ...), and those without, in order.
+// (`active`: of those listed only.)
 void splitAtHalos(const ParticleSet& p, const HydroWorkspace& ws, std::size_t first,
-                  std::vector<std::size_t>& interior, std::vector<std::size_t>& boundary) {
-  std::vector<char> touches(p.numReal, 0);
+                  const std::vector<std::size_t>* active, std::vector<std::size_t>& interior,
+                  std::vector<std::size_t>& boundary) {
+  const std::size_t count = active ? active->size() : p.numReal;
+  std::vector<char> touches(count, 0);
 #pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < p.numReal; ++i)
-    for (std::uint32_t j : ws.lists.pairs(i))
+  for (std::size_t k = 0; k < count; ++k)
+    for (std::uint32_t j : ws.lists.pairs(active ? (*active)[k] : k))
       if (j >= first) {
-        touches[i] = 1;
+        touches[k] = 1;
         break;
       }
-  for (std::size_t i = 0; i < p.numReal; ++i) (touches[i] ? boundary : interior).push_back(i);
+  for (std::size_t k = 0; k < count; ++k)
+    (touches[k] ? boundary : interior).push_back(active ? (*active)[k] : k);
 }
 
 // One fused loop over the pairs of each real particle; the optional terms are small inline
 // objects (sim/sph/terms/) that hold their own per-particle data and say whether they are on.
 template <template <int> class K, int D, bool RZ, MomentumForm Form, bool Solid>
-void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos) {
+void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
+                   const std::vector<std::size_t>* active) {
   const SphOptions& sph = ws.sph;
   const std::size_t nReal = p.numReal;
   constexpr bool kInterface = Form == MomentumForm::Interface;
@@ -214,11 +219,12 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos)
   };
 
   if (!halos) {
-    sumParticles.template operator()<false>(0, nReal, nullptr);
+    if (active) sumParticles.template operator()<true>(0, active->size(), active->data());
+    else sumParticles.template operator()<false>(0, nReal, nullptr);
     return;
   }
   std::vector<std::size_t> interior, boundary;
-  splitAtHalos(p, ws, halos->first, interior, boundary);
+  splitAtHalos(p, ws, halos->first, active, interior, boundary);
   constexpr std::size_t kSlices = 8;  // progress() between them
   for (std::size_t s = 0; s < kSlices; ++s) {
     sumParticles.template operator()<true>(interior.size() * s / kSlices,
@@ -247,16 +253,17 @@ void initialiseViscosityAlpha(ParticleSet& p, const SphOptions& sph) {
     if (std::isfinite(p.lightingTime[i])) p.alpha[i] = sph.alpha;
 }
 
-void runForcePass(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos) {
+void runForcePass(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
+                  const std::vector<std::size_t>* active) {
   const bool solid = p.stressComponents() > 0;
   const MomentumForm form = ws.sph.form;
   dispatchHydro(ws, [&]<template <int> class K, int D, bool RZ>() {
     if (form == MomentumForm::Interface) {
-      if (solid) forcePassImpl<K, D, RZ, MomentumForm::Interface, true>(p, ws, halos);
-      else forcePassImpl<K, D, RZ, MomentumForm::Interface, false>(p, ws, halos);
+      if (solid) forcePassImpl<K, D, RZ, MomentumForm::Interface, true>(p, ws, halos, active);
+      else forcePassImpl<K, D, RZ, MomentumForm::Interface, false>(p, ws, halos, active);
     } else {
-      if (solid) forcePassImpl<K, D, RZ, MomentumForm::Lagrangian, true>(p, ws, halos);
-      else forcePassImpl<K, D, RZ, MomentumForm::Lagrangian, false>(p, ws, halos);
+      if (solid) forcePassImpl<K, D, RZ, MomentumForm::Lagrangian, true>(p, ws, halos, active);
+      else forcePassImpl<K, D, RZ, MomentumForm::Lagrangian, false>(p, ws, halos, active);
     }
   });
 }

@@ -14,7 +14,9 @@
 // RZ (ring masses, Brookshaw 2003 / Garcia-Senz et al. 2009 area-weighted form): rho^2 becomes
 // rho * eta and rho_ij becomes eta_ij; the hoop terms +P_i rt'/(rho_i rt_i) (radial acceleration)
 // and -P_i v_r rt'/(rho_i rt_i) (energy) complete the Lagrangian derivation (docs/rz.md).
+#include <cstddef>
 #include <functional>
+#include <vector>
 
 #include "sim/sph/hydro_workspace.hpp"
 #include "sim/state/particles.hpp"
@@ -37,7 +39,10 @@ struct HaloArrival {
 // `halos`, the halos refreshed).
 // Produces for the real particles a and du_dt; with continuity density drho_dt (and dh_dt for the
 // seed's h); with the switch dalpha_dt; for solids dstress_dt and the strain rate.
-void runForcePass(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos = nullptr);
+// With `active` (individual time steps) only the listed real particles are summed, and only
+// their pairs need be built; the others keep their derivatives.
+void runForcePass(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos = nullptr,
+                  const std::vector<std::size_t>* active = nullptr);
 
 // The viscosity switch's state, for a run whose scene turns it on and whose particles do not yet
 // carry alpha (a new run, or a restart from a snapshot written without it): alpha_min, except

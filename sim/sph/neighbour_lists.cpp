@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <numeric>
 
 namespace ejecta {
@@ -90,11 +91,63 @@ void NeighbourLists::buildPairs(const ParticleSet& p, double support) {
     for (const auto& [i, j] : list) pairs_[fill[i]++] = j;
 }
 
+template <int D>
+void NeighbourLists::buildActivePairs(const ParticleSet& p, const CellGrid& grid, double support,
+                                      const std::vector<std::size_t>& active) {
+  const std::size_t nReal = p.numReal;
+  // The partners beyond i's own support whose larger kernel reaches i, ascending in j.
+  std::vector<std::vector<std::uint32_t>> extra(active.size());
+#pragma omp parallel
+  {
+    std::vector<std::uint32_t> found;
+#pragma omp for schedule(dynamic, 64)
+    for (std::size_t k = 0; k < active.size(); ++k) {
+      const std::size_t i = active[k];
+      const double xi[3] = {p.x[0][i], p.x[1][i], p.x[2][i]};
+      const double own = support * p.h[i];
+      const double reach = grid.reachInto(xi);
+      if (reach <= own) continue;  // no kernel wider than i's own reaches here
+      found.clear();
+      grid.query<D>(p, xi, reach, found);
+      std::vector<std::uint32_t>& mine = extra[k];
+      for (std::uint32_t j : found) {
+        double r2 = 0.0;
+        for (int d = 0; d < D; ++d) {
+          const double dx = p.x[d][i] - p.x[d][j];
+          r2 += dx * dx;
+        }
+        const double reachJ = support * p.h[j];
+        if (r2 >= own * own && r2 < reachJ * reachJ) mine.push_back(j);
+      }
+      std::sort(mine.begin(), mine.end());
+    }
+  }
+  pairStart_.assign(nReal + 1, 0);
+  for (std::size_t k = 0; k < active.size(); ++k)
+    pairStart_[active[k] + 1] = count_[active[k]] + extra[k].size();
+  for (std::size_t i = 0; i < nReal; ++i) pairStart_[i + 1] += pairStart_[i];
+  pairs_.resize(pairStart_[nReal]);
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < active.size(); ++k) {
+    const std::size_t i = active[k];
+    const auto g = gather(i);
+    auto at = pairs_.begin() + static_cast<std::ptrdiff_t>(pairStart_[i]);
+    at = std::copy(g.begin(), g.end(), at);
+    std::copy(extra[k].begin(), extra[k].end(), at);
+  }
+}
+
 template void NeighbourLists::findGhostGathers<1>(const ParticleSet&, const CellGrid&, double);
 template void NeighbourLists::findGhostGathers<2>(const ParticleSet&, const CellGrid&, double);
 template void NeighbourLists::findGhostGathers<3>(const ParticleSet&, const CellGrid&, double);
 template void NeighbourLists::buildPairs<1>(const ParticleSet&, double);
 template void NeighbourLists::buildPairs<2>(const ParticleSet&, double);
 template void NeighbourLists::buildPairs<3>(const ParticleSet&, double);
+template void NeighbourLists::buildActivePairs<1>(const ParticleSet&, const CellGrid&, double,
+                                                  const std::vector<std::size_t>&);
+template void NeighbourLists::buildActivePairs<2>(const ParticleSet&, const CellGrid&, double,
+                                                  const std::vector<std::size_t>&);
+template void NeighbourLists::buildActivePairs<3>(const ParticleSet&, const CellGrid&, double,
+                                                  const std::vector<std::size_t>&);
 
 }  // namespace ejecta

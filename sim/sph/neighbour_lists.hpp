@@ -30,6 +30,12 @@ class NeighbourLists {
   // Builds pairs() for the real particles from the gather lists.
   template <int D>
   void buildPairs(const ParticleSet& p, double support);
+  // Individual time steps: pairs() for the `active` real particles only (the others get none),
+  // from their gather lists and the grid's reach (CellGrid::recordReach), in the order
+  // buildPairs gives them.
+  template <int D>
+  void buildActivePairs(const ParticleSet& p, const CellGrid& grid, double support,
+                        const std::vector<std::size_t>& active);
   std::span<const std::uint32_t> pairs(std::size_t i) const {
     return {pairs_.data() + pairStart_[i], pairStart_[i + 1] - pairStart_[i]};
   }

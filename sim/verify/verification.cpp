@@ -60,6 +60,7 @@ Finished runAt(Scene scene, double coarsen, const Options& options,
   f.run.spacing = scene.bodies.front().spacing;
   f.run.particles = outcome.summary.particles;
   f.run.steps = outcome.summary.steps;
+  f.run.particleUpdates = sim.particleUpdates();
   f.run.wallSeconds = outcome.summary.wallSeconds;
   f.run.energyError = outcome.summary.energy.relativeError;
   // RZ conserves only axial momentum (component 1); the radial one is not a conserved quantity.
@@ -404,7 +405,8 @@ std::string reportJson(const Report& r) {
   for (std::size_t k = 0; k < r.runs.size(); ++k) {
     const ResolutionRun& run = r.runs[k];
     s << "    {\"spacing\": " << run.spacing << ", \"particles\": " << run.particles
-      << ", \"steps\": " << run.steps << ", \"wall_seconds\": " << run.wallSeconds
+      << ", \"steps\": " << run.steps << ", \"particle_updates\": " << run.particleUpdates
+      << ", \"wall_seconds\": " << run.wallSeconds
       << ", \"energy_error\": " << run.energyError << ", \"momentum_error\": " << run.momentumError;
     for (const Metric& m : run.metrics) s << ", \"" << m.name << "\": " << m.value;
     s << "}" << (k + 1 < r.runs.size() ? "," : "") << "\n";

@@ -3,6 +3,7 @@
 // one or more resolutions and measures its error against an exact solution. The same code backs
 // `ejecta verify NAME` and the CTest verification tests, so the README's error tables come from
 // a command anyone can rerun.
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -20,6 +21,7 @@ struct ResolutionRun {
   double spacing = 0.0;       // lattice spacing of the first body [m]
   std::size_t particles = 0;
   long steps = 0;
+  std::uint64_t particleUpdates = 0;  // particle-steps: particles x steps with global steps
   double wallSeconds = 0.0;
   double energyError = 0.0;   // relative total energy change over the run
   double momentumError = 0.0; // |P_final - P_initial| / (M * characteristic speed)

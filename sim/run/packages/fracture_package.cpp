@@ -27,17 +27,23 @@ void FracturePackage::updateState(ParticleSet& p, const PackageContext&) {
 }
 
 void FracturePackage::evaluateDerivatives(ParticleSet& p, const PackageContext& c) {
-  computeCrackGrowth(p, c.materials, flaws_, c.dimension);
+  computeCrackGrowth(p, c.materials, flaws_, c.dimension, c.active);
 }
 
 void FracturePackage::finalize(ParticleSet& p, const PackageContext& c) {
-  lastFailures_ = applyFailure(p, c.materials);
+  lastFailures_ = applyFailure(p, c.materials, c.active);
 }
 
 double FracturePackage::timestep(const ParticleSet& p, const PackageContext& c) const {
   // No Grady-Kipp crack fraction may grow by more than maxCrackIncrement in a step, so that the
   // stress a cracking particle sheds reaches its neighbours while it cracks.
   return crackGrowthTimestep(p, c.materials);
+}
+
+void FracturePackage::particleTimesteps(const ParticleSet& p, const PackageContext& c,
+                                        std::span<const std::size_t> which,
+                                        std::span<double> dt) const {
+  crackGrowthTimesteps(p, c.materials, which, dt);
 }
 
 }  // namespace ejecta

@@ -19,6 +19,8 @@ class FracturePackage : public PhysicsPackage {
   void evaluateDerivatives(ParticleSet& p, const PackageContext& c) override;
   void finalize(ParticleSet& p, const PackageContext& c) override;
   double timestep(const ParticleSet& p, const PackageContext& c) const override;
+  void particleTimesteps(const ParticleSet& p, const PackageContext& c,
+                         std::span<const std::size_t> which, std::span<double> dt) const override;
 
   // Grady-Kipp flaws from the particles as built at t = 0 (their volumes m/rho), so a restarted
   // run draws the flaws of the uninterrupted one.

@@ -18,7 +18,7 @@ void StrengthPackage::updateState(ParticleSet& p, const PackageContext& c) {
 }
 
 void StrengthPackage::finalize(ParticleSet& p, const PackageContext& c) {
-  applyPlasticity(p, c.materials, true);
+  applyPlasticity(p, c.materials, true, c.active);
 }
 
 }  // namespace ejecta

@@ -1,0 +1,92 @@
+// Individual against global time steps on one verification problem (docs/time_steps.md): runs
+// it with `[time] stepping = "global"` and `"individual"` at the same resolution and prints, for
+// each, the (sub-)steps, the particle-steps, the wall time, the particle-steps per second per
+// core, the problem's error measures and the energy error; then the ratios individual/global.
+//
+//   ejecta_bench_time_steps [--problem sedov_rz] [--threads T] [--set KEY=VALUE]... [--json]
+//                           [--limiter-factor F]
+//
+// `--set` goes to both runs (e.g. --set "bodies[0].spacing=0.01" for a coarser Sedov 2D).
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "bench/arguments.hpp"
+#include "sim/run/run.hpp"
+#include "sim/verify/verification.hpp"
+
+using namespace ejecta;
+
+int main(int argc, char** argv) {
+  std::string problem = "sedov_rz";
+  int threads = 0;
+  bool json = false;
+  std::vector<std::string> overrides;
+  std::string limiter;
+  bench::Arguments args(argc, argv);
+  for (std::string arg; args.next(arg);) {
+    if (arg == "--problem") problem = args.value();
+    else if (arg == "--threads") threads = std::atoi(args.value());
+    else if (arg == "--set") overrides.emplace_back(args.value());
+    else if (arg == "--limiter-factor") limiter = args.value();
+    else if (arg == "--json") json = true;
+    else { std::fprintf(stderr, "unknown option %s\n", arg.c_str()); return 2; }
+  }
+  const int nThreads = resolveThreads(threads);
+  verify::Options options;
+  options.threads = nThreads;
+  options.resolutions = 1;
+  options.overrides = overrides;
+  std::vector<verify::ResolutionRun> runs;
+  try {
+    runs.push_back(verify::runProblem(problem, options).runs.back());
+    options.overrides.push_back("time.stepping=individual");
+    if (!limiter.empty()) options.overrides.push_back("time.limiter_factor=" + limiter);
+    runs.push_back(verify::runProblem(problem, options).runs.back());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "ejecta_bench_time_steps: %s\n", e.what());
+    return 1;
+  }
+  const char* names[2] = {"global", "individual"};
+  auto perCore = [&](const verify::ResolutionRun& r) {
+    return r.wallSeconds > 0 ? static_cast<double>(r.particleUpdates) / r.wallSeconds / nThreads : 0.0;
+  };
+  const double wallRatio = runs[1].wallSeconds / runs[0].wallSeconds;
+  const double updateRatio =
+      static_cast<double>(runs[1].particleUpdates) / static_cast<double>(runs[0].particleUpdates);
+  if (json) {
+    std::printf("{\"problem\": \"%s\", \"threads\": %d, \"particles\": %zu, \"runs\": [", problem.c_str(),
+                nThreads, runs[0].particles);
+    for (int k = 0; k < 2; ++k) {
+      const verify::ResolutionRun& r = runs[static_cast<std::size_t>(k)];
+      std::printf("%s{\"stepping\": \"%s\", \"steps\": %ld, \"particle_updates\": %llu, "
+                  "\"wall_seconds\": %.3f, \"updates_per_second_per_core\": %.4g, "
+                  "\"energy_error\": %.3g",
+                  k ? ", " : "", names[k], r.steps, static_cast<unsigned long long>(r.particleUpdates),
+                  r.wallSeconds, perCore(r), r.energyError);
+      for (const verify::Metric& m : r.metrics) std::printf(", \"%s\": %.6g", m.name.c_str(), m.value);
+      std::printf("}");
+    }
+    std::printf("], \"wall_ratio\": %.4f, \"update_ratio\": %.4f}\n", wallRatio, updateRatio);
+    return 0;
+  }
+  std::printf("%s, %zu particles, %d threads\n", problem.c_str(), runs[0].particles, nThreads);
+  std::printf("  %-10s %8s %14s %9s %16s %11s", "stepping", "steps", "particle-steps", "wall [s]",
+              "steps/s per core", "energy err");
+  for (const verify::Metric& m : runs[0].metrics)
+    if (m.name.rfind("L1_", 0) == 0) std::printf(" %12s", m.name.c_str());
+  std::printf("\n");
+  for (int k = 0; k < 2; ++k) {
+    const verify::ResolutionRun& r = runs[static_cast<std::size_t>(k)];
+    std::printf("  %-10s %8ld %14llu %9.2f %16.4g %11.2e", names[k], r.steps,
+                static_cast<unsigned long long>(r.particleUpdates), r.wallSeconds, perCore(r),
+                r.energyError);
+    for (const verify::Metric& m : r.metrics)
+      if (m.name.rfind("L1_", 0) == 0) std::printf(" %12.4g", m.value);
+    std::printf("\n");
+  }
+  std::printf("  individual / global: wall %.3f (%.2fx faster), particle-steps %.4f\n", wallRatio,
+              1.0 / wallRatio, updateRatio);
+  return 0;
+}

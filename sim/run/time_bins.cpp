@@ -1,0 +1,320 @@
+#include "sim/run/time_bins.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "sim/solid/fracture.hpp"
+
+namespace ejecta {
+
+namespace {
+
+constexpr const char* kBeginField = "step_begin";
+constexpr const char* kEndField = "step_end";
+constexpr const char* kGradientField = "last:velocity_gradient";
+
+FieldSpec stateField(std::string name, std::string units, std::string description,
+                     FieldOutput output, int components = 1) {
+  FieldSpec f;
+  f.name = std::move(name);
+  f.units = std::move(units);
+  f.description = std::move(description);
+  f.output = output;
+  f.required = false;  // a run with global steps writes none of them
+  f.components = components;
+  return f;
+}
+
+int evolvedComponents(const Field& f, int dimension) {
+  return f.spec.spatial ? std::min(dimension, f.spec.components) : f.spec.components;
+}
+
+// One bounded half kick, as the leapfrog's (sim/run/leapfrog.hpp).
+double limitedKick(const Field& f, double y, double rate, double dt, double cap) {
+  switch (f.spec.limit) {
+    case KickLimit::None: return y + dt * rate;
+    case KickLimit::Clamp: return std::clamp(y + dt * rate, f.spec.lo, f.spec.hi);
+    case KickLimit::Cap: return advanceCrack(y, rate, dt, cap);
+  }
+  return y + dt * rate;
+}
+
+// The largest change of ln rho that a prediction applies: beyond it the particle's step was far
+// too long for its compression, which the limiter or the next evaluation corrects.
+constexpr double kMaxLogPrediction = 1.0;
+
+}  // namespace
+
+TimeBins::TimeBins(int limiterFactor, double dtMax) : dtMax_(dtMax) {
+  if (limiterFactor == 0) {
+    limiterLevels_ = -1;
+  } else {
+    if (limiterFactor < 2 || (limiterFactor & (limiterFactor - 1)) != 0)
+      throw std::invalid_argument("time-step limiter factor must be a power of two >= 2, or 0");
+    limiterLevels_ = std::countr_zero(static_cast<unsigned>(limiterFactor));
+  }
+}
+
+void TimeBins::registerFields(ParticleSet& p, const Leapfrog& leapfrog, bool summationDensity,
+                              bool tiedSmoothingLength) {
+  summation_ = summationDensity;
+  tiedH_ = tiedSmoothingLength;
+  if (!p.field(kBinField)) {
+    FieldSpec bin = stateField(kBinField, "1",
+                               "individual time steps: the bin of the step in progress (its "
+                               "length is the block's / 2^bin)",
+                               FieldOutput::Particles);
+    bin.xdmf = true;
+    bin.halo = true;  // the limiter reads the neighbours' bins, images included
+    p.declare(bin);
+  }
+  if (!p.field(kOwnStepField))
+    p.declare(stateField(kOwnStepField, "s",
+                         "individual time steps: the particle's own step limit at its last "
+                         "evaluation",
+                         FieldOutput::Restart));
+  if (!p.field(kBeginField))
+    p.declare(stateField(kBeginField, "1", "tick its step began at", FieldOutput::None));
+  if (!p.field(kEndField))
+    p.declare(stateField(kEndField, "1", "tick its step ends at", FieldOutput::None));
+  for (const char* name : {"omega", "divv", "curlv"})
+    if (!p.field(std::string("last:") + name))
+      p.declare(stateField(std::string("last:") + name, p.field(name)->spec.units,
+                           "its value at the particle's last evaluation", FieldOutput::Restart));
+  if (!p.field(kGradientField))
+    p.declare(stateField(kGradientField, "1/s",
+                         "its velocity gradient at the particle's last evaluation (viscosity "
+                         "reconstruction)",
+                         FieldOutput::Restart, 9));
+  advanced_.clear();
+  // Copy the declarations first: declaring adds fields (and may move the registry).
+  const std::vector<Field> fields = p.fields();
+  for (const Field& f : fields) {
+    if (f.spec.evolution != Evolution::Kicked) continue;
+    Advanced a;
+    a.name = f.spec.name;
+    a.held = leapfrog.holds(f.spec.name);
+    if (a.held && !((f.spec.name == "density" && summation_) ||
+                    (f.spec.name == "smoothing_length" && tiedH_)))
+      continue;  // held and not predicted (h from the density in continuity runs, constant h)
+    a.start = f.spec.name + ":start";
+    if (!p.field(a.start))
+      p.declare(stateField(a.start, f.spec.units, "its value at the start of the particle's step",
+                           FieldOutput::None, f.spec.components));
+    if (!a.held && f.spec.limit == KickLimit::Cap) {
+      a.cap = f.spec.name + ":cap";
+      if (!p.field(a.cap))
+        p.declare(stateField(a.cap, "1", "its kick's cap through the particle's step",
+                             FieldOutput::None));
+    }
+    advanced_.push_back(std::move(a));
+  }
+}
+
+void TimeBins::beginBlock(double start, double length) {
+  if (!(length > 0.0) || !std::isfinite(length))
+    throw std::logic_error("a block of individual time steps needs a positive length");
+  start_ = start;
+  length_ = length;
+  end_ = start + length;
+  now_ = 0;
+}
+
+double TimeBins::timeAt(Tick t) const {
+  if (t >= kBlockTicks) return end_;  // the block ends exactly where the run asked
+  return start_ + length_ * std::ldexp(static_cast<double>(t), -kDeepest);
+}
+
+double TimeBins::stepLength(const ParticleSet& p, std::size_t i) const {
+  const Tick begin = static_cast<Tick>(p.column(*p.field(kBeginField), 0)[i]);
+  const Tick end = static_cast<Tick>(p.column(*p.field(kEndField), 0)[i]);
+  return timeAt(end) - timeAt(begin);
+}
+
+bool TimeBins::beginSteps(ParticleSet& p, const Leapfrog& leapfrog,
+                          std::span<const std::size_t> which, std::span<const int> floorBin) {
+  if (which.empty()) return true;
+  std::vector<double>& bin = bins(p);
+  const std::vector<double>& own = p.column(*p.field(kOwnStepField), 0);
+  std::vector<double>& begin = p.column(*p.field(kBeginField), 0);
+  std::vector<double>& end = p.column(*p.field(kEndField), 0);
+  bool ok = true;
+#pragma omp parallel for schedule(static) reduction(&& : ok)
+  for (std::size_t k = 0; k < which.size(); ++k) {
+    const std::size_t i = which[k];
+    double dt = own[i];
+    if (dtMax_ > 0.0) dt = std::min(dt, dtMax_);
+    int b = 0;
+    while (b < kDeepest && std::ldexp(length_, -b) > dt) ++b;
+    if (!(std::ldexp(length_, -b) <= dt)) ok = false;  // finer than the finest bin (or NaN)
+    if (!floorBin.empty()) b = std::max(b, std::min(floorBin[k], kDeepest));
+    while (now_ % ticksOf(b) != 0) ++b;  // a step starts on a multiple of its length
+    bin[i] = b;
+    begin[i] = static_cast<double>(now_);
+    end[i] = static_cast<double>(now_ + ticksOf(b));
+  }
+  for (const Advanced& a : advanced_) {
+    const Field& f = *p.field(a.name);
+    const Field& s = *p.field(a.start);
+    for (int c = 0; c < f.spec.components; ++c) {
+      const std::vector<double>& y = p.column(f, c);
+      std::vector<double>& y0 = p.column(s, c);
+      for (std::size_t i : which) y0[i] = y[i];
+    }
+    if (a.cap.empty()) continue;
+    const Leapfrog::CapSource* source = leapfrog.caps(a.name);
+    if (!source) throw std::logic_error("field '" + a.name + "' is Cap-limited but has no cap source");
+    const std::vector<double> caps = (*source)(p);
+    std::vector<double>& stored = p.column(*p.field(a.cap), 0);
+    for (std::size_t i : which) stored[i] = caps[i];
+  }
+  return ok;
+}
+
+TimeBins::Tick TimeBins::nextEnd(const ParticleSet& p) const {
+  const std::vector<double>& end = p.column(*p.field(kEndField), 0);
+  double next = static_cast<double>(kBlockTicks);
+  for (std::size_t i = 0; i < p.numReal; ++i) next = std::min(next, end[i]);
+  return static_cast<Tick>(next);
+}
+
+std::vector<std::size_t> TimeBins::advanceTo(ParticleSet& p, const Leapfrog& leapfrog, Tick next,
+                                             int dimension) {
+  (void)leapfrog;
+  const std::size_t n = p.numReal;
+  const std::vector<double>& begin = p.column(*p.field(kBeginField), 0);
+  const std::vector<double>& end = p.column(*p.field(kEndField), 0);
+  const double tNow = timeAt(now_), tNext = timeAt(next);
+  const double delta = tNext - tNow;
+  // Per particle: time since its step began, half its step, whether its step ends now.
+  std::vector<double> elapsed(n), half(n);
+  std::vector<unsigned char> ends(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t0 = timeAt(static_cast<Tick>(begin[i]));
+    elapsed[i] = tNext - t0;
+    half[i] = 0.5 * (timeAt(static_cast<Tick>(end[i])) - t0);
+    ends[i] = static_cast<Tick>(end[i]) == next;
+  }
+  const Field* velocity = p.field("velocity");
+  for (const Advanced& a : advanced_) {
+    const Field& f = *p.field(a.name);
+    const Field& s = *p.field(a.start);
+    if (a.held) {
+      // rho(t0) exp(-div v dt), h(t0) exp(div v dt / d): the continuity rate's prediction.
+      const double sign = a.name == "density" ? -1.0 : 1.0 / dimension;
+      double* y = p.column(f, 0).data();
+      const double* y0 = p.column(s, 0).data();
+      const double* divv = p.divv.data();
+#pragma omp parallel for schedule(static)
+      for (std::size_t i = 0; i < n; ++i)
+        y[i] = y0[i] * std::exp(std::clamp(sign * divv[i] * elapsed[i], -kMaxLogPrediction,
+                                           kMaxLogPrediction));
+      continue;
+    }
+    const Field& rate = *p.field(f.spec.rate);
+    const double* caps = a.cap.empty() ? nullptr : p.column(*p.field(a.cap), 0).data();
+    for (int c = 0; c < evolvedComponents(f, dimension); ++c) {
+      double* y = p.column(f, c).data();
+      double* y0 = p.column(s, c).data();  // finishing particles: becomes y_half
+      const double* r = p.column(rate, c).data();
+#pragma omp parallel for schedule(static)
+      for (std::size_t i = 0; i < n; ++i) {
+        const double cap = caps ? caps[i] : 1.0;
+        if (ends[i]) {
+          const double yHalf = limitedKick(f, y0[i], r[i], half[i], cap);
+          y0[i] = yHalf;
+          y[i] = limitedKick(f, yHalf, r[i], half[i], cap);
+        } else {
+          y[i] = limitedKick(f, y0[i], r[i], elapsed[i], cap);
+        }
+      }
+      if (&f == velocity) {
+        // Positions drift by the half-step velocity of each particle's own step.
+        double* x = p.x[static_cast<std::size_t>(c)].data();
+        const double* a0 = p.a[static_cast<std::size_t>(c)].data();
+#pragma omp parallel for schedule(static)
+        for (std::size_t i = 0; i < n; ++i)
+          x[i] += delta * (ends[i] ? y0[i] : y0[i] + half[i] * a0[i]);
+      }
+    }
+  }
+  if (!velocity || !p.field("velocity:start"))
+    throw std::logic_error("individual time steps need the velocity among the advanced fields");
+  now_ = next;
+  std::vector<std::size_t> finishing;
+  for (std::size_t i = 0; i < n; ++i)
+    if (ends[i]) finishing.push_back(i);
+  return finishing;
+}
+
+void TimeBins::finishSteps(ParticleSet& p, const Leapfrog& leapfrog,
+                           std::span<const std::size_t> which, int dimension) {
+  std::vector<double> half(which.size());
+  for (std::size_t k = 0; k < which.size(); ++k) half[k] = 0.5 * stepLength(p, which[k]);
+  for (const Advanced& a : advanced_) {
+    if (a.held) continue;
+    const Field& f = *p.field(a.name);
+    const Field& s = *p.field(a.start);
+    const Field& rate = *p.field(f.spec.rate);
+    std::vector<double> caps;
+    if (!a.cap.empty()) caps = (*leapfrog.caps(a.name))(p);  // from the state at the step's end
+    for (int c = 0; c < evolvedComponents(f, dimension); ++c) {
+      double* y = p.column(f, c).data();
+      const double* yHalf = p.column(s, c).data();
+      const double* r = p.column(rate, c).data();
+#pragma omp parallel for schedule(static)
+      for (std::size_t k = 0; k < which.size(); ++k) {
+        const std::size_t i = which[k];
+        y[i] = limitedKick(f, yHalf[i], r[i], half[k], caps.empty() ? 1.0 : caps[i]);
+      }
+    }
+  }
+  updates_ += which.size();
+}
+
+void TimeBins::keepEvaluation(ParticleSet& p, const std::vector<double>& gradient) const {
+  const std::size_t n = p.numReal;
+  for (const char* name : {"omega", "divv", "curlv"}) {
+    const std::vector<double>& from = p.column(*p.field(name), 0);
+    std::copy(from.begin(), from.begin() + static_cast<std::ptrdiff_t>(n),
+              p.column(*p.field(std::string("last:") + name), 0).begin());
+  }
+  const Field& g = *p.field(kGradientField);
+  const bool have = gradient.size() >= 9 * n;
+  for (int c = 0; c < 9; ++c) {
+    std::vector<double>& to = p.column(g, c);
+    for (std::size_t i = 0; i < n; ++i) to[i] = have ? gradient[9 * i + static_cast<std::size_t>(c)] : 0.0;
+  }
+}
+
+void TimeBins::restoreEvaluation(ParticleSet& p, std::vector<double>& gradient) const {
+  const std::size_t n = p.numReal;
+  for (const char* name : {"omega", "divv", "curlv"}) {
+    const std::vector<double>& from = p.column(*p.field(std::string("last:") + name), 0);
+    std::copy(from.begin(), from.begin() + static_cast<std::ptrdiff_t>(n),
+              p.column(*p.field(name), 0).begin());
+  }
+  if (gradient.empty()) return;  // the run does not reconstruct velocities
+  gradient.assign(9 * n, 0.0);
+  const Field& g = *p.field(kGradientField);
+  for (int c = 0; c < 9; ++c) {
+    const std::vector<double>& from = p.column(g, c);
+    for (std::size_t i = 0; i < n; ++i) gradient[9 * i + static_cast<std::size_t>(c)] = from[i];
+  }
+}
+
+bool TimeBins::wake(ParticleSet& p, std::size_t i, int bin) const {
+  std::vector<double>& end = p.column(*p.field(kEndField), 0);
+  const Tick step = ticksOf(std::clamp(bin, 0, kDeepest));
+  const Tick cut = (now_ / step + 1) * step;  // the next tick of `bin` after now
+  if (cut >= static_cast<Tick>(end[i])) return false;
+  end[i] = static_cast<double>(cut);
+  bins(p)[i] = bin;
+  return true;
+}
+
+}  // namespace ejecta
