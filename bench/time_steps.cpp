@@ -72,20 +72,19 @@ int main(int argc, char** argv) {
     return 0;
   }
   std::printf("%s, %zu particles, %d threads\n", problem.c_str(), runs[0].particles, nThreads);
-  std::printf("  %-10s %8s %14s %9s %16s %11s", "stepping", "steps", "particle-steps", "wall [s]",
-              "steps/s per core", "energy err");
-  for (const verify::Metric& m : runs[0].metrics)
-    if (m.name.rfind("L1_", 0) == 0) std::printf(" %12s", m.name.c_str());
-  std::printf("\n");
+  std::printf("  %-10s %8s %14s %9s %16s %11s\n", "stepping", "steps", "particle-steps",
+              "wall [s]", "steps/s per core", "energy err");
   for (int k = 0; k < 2; ++k) {
     const verify::ResolutionRun& r = runs[static_cast<std::size_t>(k)];
-    std::printf("  %-10s %8ld %14llu %9.2f %16.4g %11.2e", names[k], r.steps,
+    std::printf("  %-10s %8ld %14llu %9.2f %16.4g %11.2e\n", names[k], r.steps,
                 static_cast<unsigned long long>(r.particleUpdates), r.wallSeconds, perCore(r),
                 r.energyError);
-    for (const verify::Metric& m : r.metrics)
-      if (m.name.rfind("L1_", 0) == 0) std::printf(" %12.4g", m.value);
-    std::printf("\n");
   }
+  // The problem's own error measures, side by side.
+  std::printf("  %-28s %14s %14s\n", "measure", "global", "individual");
+  for (std::size_t m = 0; m < runs[0].metrics.size() && m < runs[1].metrics.size(); ++m)
+    std::printf("  %-28s %14.6g %14.6g %s\n", runs[0].metrics[m].name.c_str(),
+                runs[0].metrics[m].value, runs[1].metrics[m].value, runs[0].metrics[m].unit.c_str());
   std::printf("  individual / global: wall %.3f (%.2fx faster), particle-steps %.4f\n", wallRatio,
               1.0 / wallRatio, updateRatio);
   return 0;

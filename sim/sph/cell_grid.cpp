@@ -61,7 +61,8 @@ void CellGrid::build(const ParticleSet& p, int dim, double cellSize) {
 
 void CellGrid::recordReach(const ParticleSet& p, double support) {
   const std::size_t numCells = cellStart_.size() - 1;
-  std::vector<double> own(numCells, 0.0);  // the widest support of the particles in each cell
+  std::vector<double>& own = ownReach_;  // the widest support of the particles in each cell
+  own.assign(numCells, 0.0);
   for (std::size_t c = 0; c < numCells; ++c)
     for (std::uint32_t k = cellStart_[c]; k < cellStart_[c + 1]; ++k)
       own[c] = std::max(own[c], support * p.h[sorted_[k]]);

@@ -3,6 +3,7 @@
 // by a counting sort (cell-linked list in compressed form). Rebuilt every step; queries return
 // every particle within a radius of a point, visiting cells in a fixed order so results are
 // deterministic.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -28,6 +29,12 @@ class CellGrid {
   // support h_j, so a query of that radius finds every such j. Call after h is final.
   void recordReach(const ParticleSet& p, double support);
   double reachInto(const double* point) const;
+  // Appends every particle j within `radius` of `point` whose cell's widest support could reach
+  // it: a query of radius reachInto(point) that skips the cells whose own particles' supports
+  // stop short of the point (the wide kernels of a hot centre are visited only where they reach).
+  // After recordReach; the caller tests r < support h_j itself.
+  template <int D>
+  void queryReaching(const double* point, double radius, std::vector<std::uint32_t>& out) const;
 
   // Cell index of each real particle under this grid; used to reorder particles for locality.
   std::vector<std::uint64_t> cellKeys(const ParticleSet& p, std::size_t count) const;
@@ -43,6 +50,7 @@ class CellGrid {
   std::vector<std::uint32_t> sorted_;     // particle indices ordered by cell
   std::vector<double> sortedPos_[3];      // positions in cell order, for cache-friendly queries
   std::vector<double> reach_;             // per cell: recordReach's widest support reaching it
+  std::vector<double> ownReach_;          // per cell: the widest support of its own particles
 
   long cellCoord(double x, int d) const;
 };
@@ -72,6 +80,46 @@ void CellGrid::query(const ParticleSet&, const double* point, double radius,
       }
     }
   }
+}
+
+template <int D>
+void CellGrid::queryReaching(const double* point, double radius,
+                             std::vector<std::uint32_t>& out) const {
+  long lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  for (int d = 0; d < D; ++d) {
+    lo[d] = cellCoord(point[d] - radius, d);
+    hi[d] = cellCoord(point[d] + radius, d);
+  }
+  const double r2 = radius * radius;
+  for (long cz = lo[2]; cz <= hi[2]; ++cz)
+    for (long cy = lo[1]; cy <= hi[1]; ++cy)
+      for (long cx = lo[0]; cx <= hi[0]; ++cx) {
+        const long at[3] = {cx, cy, cz};
+        const std::size_t c = static_cast<std::size_t>((cz * cells_[1] + cy) * cells_[0] + cx);
+        const double own = ownReach_[c];
+        if (own == 0.0) continue;
+        // Distance from the point to the cell; the edge cells also hold what lies beyond the
+        // grid (cellCoord clamps), so they are open on that side.
+        double gap2 = 0.0;
+        for (int d = 0; d < D; ++d) {
+          const double low = origin_[d] + static_cast<double>(at[d]) * cellSize_;
+          const double high = low + cellSize_;
+          double gap = 0.0;
+          if (point[d] < low && at[d] > 0) gap = low - point[d];
+          else if (point[d] > high && at[d] < cells_[d] - 1) gap = point[d] - high;
+          gap2 += gap * gap;
+        }
+        if (gap2 >= own * own) continue;
+        const double limit2 = std::min(r2, own * own);
+        for (std::uint32_t k = cellStart_[c]; k < cellStart_[c + 1]; ++k) {
+          double d2 = 0.0;
+          for (int d = 0; d < D; ++d) {
+            const double dx = sortedPos_[d][k] - point[d];
+            d2 += dx * dx;
+          }
+          if (d2 < limit2) out.push_back(sorted_[k]);
+        }
+      }
 }
 
 }  // namespace ejecta

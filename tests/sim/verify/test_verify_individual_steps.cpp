@@ -91,5 +91,78 @@ TEST(VerifyIndividualSteps, Sedov3DMatchesTheSimilaritySolution) {
   expectSedovPair(p, 0.05, 0.35, 0.3, 7.5e-3, 0.18);
 }
 
+// Solids, burn and water (1D and the seed's 2D Sod): the bounds of each problem's global test
+// (test_verify_sources.cpp, test_verify_plate_impact.cpp, test_verify_strength.cpp,
+// test_verify_undex.cpp, test_verify_sod.cpp) hold with individual steps too, except where noted.
+// In these problems the steps of all particles are within a factor of a few of each other, so
+// the bins save few particle-steps (0.5-1.3x) and cost wall time; docs/time_steps.md.
+
+TEST(VerifyIndividualSteps, TntBarProgrammedBurnMatchesTheExactDetonation) {
+  const Pair p = runBoth("tnt_bar_1d");
+  EXPECT_LT(std::abs(p.individual.metric("front_position_error")), 0.01);
+  EXPECT_NEAR(p.individual.metric("peak_pressure_over_cj"), 1.0, 0.10);
+  EXPECT_LT(std::abs(p.individual.metric("rest_pressure_error")), 0.01);
+  for (const char* name : {"L1_density", "L1_velocity", "L1_pressure"})
+    EXPECT_LT(p.individual.metric(name), 1.1 * p.global.metric(name)) << name;
+  EXPECT_LT(std::abs(p.individual.energyError), 6e-3);  // measured 1.9e-3 (global 7.2e-4)
+}
+
+TEST(VerifyIndividualSteps, PlateImpactMatchesTheHugoniot) {
+  const Pair p = runBoth("plate_impact_al");
+  EXPECT_NEAR(p.individual.metric("particle_velocity"), 1000.0, 1.0);
+  EXPECT_LT(std::abs(p.individual.metric("shock_speed_error")), 0.03);
+  EXPECT_LT(std::abs(p.individual.metric("shock_pressure_error")), 0.005);
+  EXPECT_LT(std::abs(p.individual.energyError), 6e-4);  // measured 1.9e-4 (global 1.3e-4)
+}
+
+TEST(VerifyIndividualSteps, ElasticPlasticWaveKeepsItsPrecursorAndHel) {
+  const Pair p = runBoth("elastic_plastic_1d");
+  EXPECT_LT(std::abs(p.individual.metric("precursor_speed_error")), 0.03);
+  EXPECT_LT(std::abs(p.individual.metric("hel_error")), 0.03);
+  EXPECT_LT(std::abs(p.individual.metric("deviatoric_stress_error")), 0.01);
+}
+
+TEST(VerifyIndividualSteps, UndexRiemannMatchesTheExactImpedanceMatch) {
+  const Pair p = runBoth("undex_riemann_1d");
+  EXPECT_LT(p.individual.metric("L1_pressure"), 0.012);
+  EXPECT_LT(p.individual.metric("L1_velocity"), 0.006);
+  EXPECT_LT(p.individual.metric("L1_density"), 0.004);
+  EXPECT_LT(std::abs(p.individual.metric("shock_position_error")), 5e-3);
+  // Looser than global's 1e-3: the interface state is off by 1.7e-3 (pressure) and 1.0e-3
+  // (velocity) with individual steps, against 2e-5 and 4e-5 with global ones: the water and the
+  // products beside the contact step at different rates (sound speeds 1.5 and 5 km/s), and the
+  // contact's pair forces are kicked at different times. 3e-3 bounds it.
+  EXPECT_LT(std::abs(p.individual.metric("interface_pressure_error")), 3e-3);
+  EXPECT_LT(std::abs(p.individual.metric("interface_velocity_error")), 3e-3);
+}
+
+TEST(VerifyIndividualSteps, UndexWaterShockMatchesTheExactPeak) {
+  const Pair p = runBoth("undex_1d");
+  // Measured: peak error -0.069 (global -0.080), shock speed 0.0059 (global 0.0043).
+  EXPECT_LT(std::abs(p.individual.metric("peak_pressure_error")), 0.10);
+  EXPECT_LT(std::abs(p.individual.metric("shock_speed_error")), 0.015);
+}
+
+TEST(VerifyIndividualSteps, TaylorBarKeepsItsLengthAndFootprint) {
+  // RZ with strength (Johnson-Cook) against a wall: the bounds of test_verify_strength.cpp on
+  // the length and footprint (measured errors 0.016 and -0.063; global 0.013 and -0.058). Not
+  // its bound on the largest plastic strain: that is one ring next to the axis, and it jumps
+  // from 1.8 to 3.7 at ~45 us whenever the steps change: the global run does so too when its
+  // steps are cut at 5 us outputs (the RZ axis of issue 19). Individual steps read 3.7.
+  const Pair p = runBoth("taylor_bar");
+  EXPECT_LT(std::abs(p.individual.metric("final_length_error")), 0.05);
+  EXPECT_LT(std::abs(p.individual.metric("footprint_diameter_error")), 0.10);
+  EXPECT_LT(std::abs(p.individual.energyError), 1e-3);  // measured 3.8e-5 (global 1.2e-4)
+}
+
+TEST(VerifyIndividualSteps, Sod2DTheSeedsCircularTubeMatchesGlobalSteps) {
+  const Pair p = runBoth("sod_2d");
+  EXPECT_LT(p.individual.metric("L1_density"), 0.016);
+  EXPECT_LT(p.individual.metric("L1_velocity"), 0.061);
+  EXPECT_LT(p.individual.metric("L1_pressure"), 0.0175);
+  for (const char* name : {"L1_density", "L1_velocity", "L1_pressure"})
+    EXPECT_LT(p.individual.metric(name), 1.05 * p.global.metric(name)) << name;  // within 1%
+}
+
 }  // namespace
 }  // namespace ejecta::verify
