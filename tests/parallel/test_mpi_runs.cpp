@@ -94,5 +94,22 @@ TEST(MpiRuns, DelayedDepositSpanningRanks) {
                                  "energy_deposits[0].time=0.004 s", "time.t_end=0.02 s"}));
 }
 
+// Individual time steps run on one rank so far (docs/time_steps.md): on more, every rank stops
+// at once with a message saying so, before any step (no rank left waiting in a collective).
+TEST(MpiRuns, IndividualTimeStepsAreRefusedWithAReason) {
+  const Scene scene = sceneFile("verification/sod_1d.toml", {"time.stepping=individual"});
+  MaterialTable materials = MaterialTable::fromScene(scene);
+  ParticleSet particles = buildParticles(scene, materials, world().get());
+  try {
+    Simulation sim(scene, std::move(particles), std::move(materials), 1, world());
+    ADD_FAILURE() << "a run with individual time steps started on " << world()->size() << " ranks";
+  } catch (const SimulationError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("individual time steps"), std::string::npos) << what;
+    EXPECT_NE(what.find("stepping = \"global\""), std::string::npos) << what;
+  }
+  EXPECT_TRUE(world()->allTrue(true));  // every rank got here
+}
+
 }  // namespace
 }  // namespace ejecta::test
