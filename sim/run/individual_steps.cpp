@@ -46,7 +46,21 @@ double Simulation::ownTimesteps(const std::vector<std::size_t>& which) {
   return domain_.comm().minimum(smallest);
 }
 
+TimeBins::Tick Simulation::nextStepEnd() const {
+  // Ticks are integers below 2^53: exact as doubles, so the ranks' minimum is exact too.
+  return static_cast<TimeBins::Tick>(
+      domain_.comm().minimum(static_cast<double>(bins_->nextEnd(p_))));
+}
+
 void Simulation::startBlock(double limit) {
+  if (domain_.distributed()) {
+    // Every particle is at the block's start: particles move to their ranks (weighted by how
+    // often their bins evaluate them), and the results of their last evaluation, stored in
+    // their fields at the block's end, come back into the workspace in the new order.
+    domain_.rebalance(p_, particleCosts());
+    bins_->restoreEvaluation(p_, ws_.velocityGradient);
+    ws_.neighbourCount.clear();  // counted again as each particle is evaluated
+  }
   // The deposit raises sound speeds by orders of magnitude: every particle's derivatives and own
   // step must come from the state with the energy (as with global steps).
   std::vector<std::size_t> all(p_.numReal);
@@ -66,8 +80,8 @@ void Simulation::startBlock(double limit) {
                         densityPassSetsSmoothingLength(scene_.sph));
   bins_->beginBlock(time_, end - time_);
   for (const auto& package : packages_) package->limitKicks(leapfrog_, packageContext());
-  if (!bins_->beginSteps(p_, leapfrog_, all, {}))
-    checkHealth(0.0);  // a limit finer than the finest bin: below dt_min, with the diagnosis
+  // A limit finer than the finest bin on any rank: below dt_min, with the diagnosis.
+  if (!domain_.comm().allTrue(bins_->beginSteps(p_, leapfrog_, all, {}))) checkHealth(0.0);
 }
 
 void Simulation::rebin(const std::vector<std::size_t>& ended) {
@@ -84,7 +98,7 @@ void Simulation::rebin(const std::vector<std::size_t>& ended) {
       floor[k] = bins_->floorFrom(finest);
     }
   }
-  if (!bins_->beginSteps(p_, leapfrog_, ended, floor)) checkHealth(0.0);
+  if (!domain_.comm().allTrue(bins_->beginSteps(p_, leapfrog_, ended, floor))) checkHealth(0.0);
   if (!bins_->limiting()) return;
   // Wake the neighbours whose step in progress is too long beside the new bins: each takes the
   // finest bin any such neighbour asks of it (a max: the order of the loop does not matter).
@@ -100,8 +114,56 @@ void Simulation::rebin(const std::vector<std::size_t>& ended) {
       const int need = bins_->floorFrom(static_cast<int>(bin[i]));
       if (static_cast<int>(bin[s]) < need) wanted[s] = std::max(wanted[s], need);
     }
+  if (domain_.distributed()) wakeFromHalos(wanted);
   for (std::size_t s = 0; s < p_.numReal; ++s)
     if (wanted[s] >= 0) bins_->wake(p_, s, wanted[s]);
+}
+
+void Simulation::wakeFromHalos(std::vector<int>& wanted) {
+  // The particles of other ranks that began a step here wake this rank's neighbours, as this
+  // rank's own do above: each rank sends the new bin of its active particles (-1: inactive) to
+  // the ranks that hold them as halos, and looks up, around each such halo, the particles its
+  // support reaches or whose support reaches it (the pairs the owner's pair list holds).
+  const std::vector<double>& bin = bins_->bins(p_);
+  const std::size_t ghosts = boundaries_.numBoundaryGhosts();
+  std::vector<double> began(p_.size(), -1.0);
+  for (std::size_t i = 0; i < p_.numReal; ++i)
+    if (activeMask_[i]) began[i] = bin[i];
+  for (std::size_t g = p_.numReal; g < p_.numReal + ghosts; ++g)
+    began[g] = began[p_.ghostSource[g - p_.numReal]];  // images sent as halos carry their source's
+  domain_.refreshHaloArray(began, 1);
+  std::vector<std::uint32_t> found;
+  for (std::size_t j = p_.numReal + ghosts; j < p_.size(); ++j) {
+    if (began[j] < 0.0) continue;
+    const double xj[3] = {p_.x[0][j], p_.x[1][j], p_.x[2][j]};
+    const double own = kKernelSupport * p_.h[j];
+    // Those within its support, then those whose own support may reach it (a particle may
+    // appear twice: the wake takes a maximum).
+    found.clear();
+    const int d = ws_.dim;
+    const double reach = ws_.grid.reachInto(xj);
+    if (d == 1) {
+      ws_.grid.query<1>(p_, xj, own, found);
+      ws_.grid.queryReaching<1>(xj, reach, found);
+    } else if (d == 2) {
+      ws_.grid.query<2>(p_, xj, own, found);
+      ws_.grid.queryReaching<2>(xj, reach, found);
+    } else {
+      ws_.grid.query<3>(p_, xj, own, found);
+      ws_.grid.queryReaching<3>(xj, reach, found);
+    }
+    const int need = bins_->floorFrom(static_cast<int>(began[j]));
+    for (std::uint32_t k : found) {
+      if (k >= p_.numReal + ghosts) continue;  // another rank's
+      double r2 = 0.0;
+      for (int a = 0; a < d; ++a) r2 += (p_.x[a][k] - xj[a]) * (p_.x[a][k] - xj[a]);
+      const double theirs = kKernelSupport * p_.h[k];
+      if (!(r2 < own * own || r2 < theirs * theirs)) continue;
+      const std::size_t s = k < p_.numReal ? k : p_.ghostSource[k - p_.numReal];
+      if (activeMask_[s]) continue;
+      if (static_cast<int>(bin[s]) < need) wanted[s] = std::max(wanted[s], need);
+    }
+  }
 }
 
 void Simulation::stepIndividually(double limit) {
@@ -123,7 +185,7 @@ void Simulation::stepIndividually(double limit) {
 
   // Every particle to the next end of a step: positions drifted, fields predicted, and the
   // first half kick of those whose step ends there (the active ones).
-  const TimeBins::Tick next = bins_->nextEnd(p_);
+  const TimeBins::Tick next = nextStepEnd();
   std::vector<std::size_t> active = bins_->advanceTo(p_, leapfrog_, next, dim);
   activeMask_.assign(p_.numReal, 0);
   for (std::size_t i : active) activeMask_[i] = 1;
@@ -160,7 +222,7 @@ void Simulation::stepIndividually(double limit) {
     dtNext_ = smallest;
   } else {
     rebin(active);
-    dtNext_ = bins_->timeAt(bins_->nextEnd(p_)) - time_;
+    dtNext_ = bins_->timeAt(nextStepEnd()) - time_;
   }
 }
 

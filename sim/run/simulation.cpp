@@ -148,13 +148,8 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
   // leapfrog advances them only when the scene integrates them.
   if (scene_.sph.density != DensityMethod::Continuity) leapfrog_.hold("density");
   if (scene_.sph.smoothingLength != SmoothingLengthMethod::Seed) leapfrog_.hold("smoothing_length");
-  if (scene_.time.stepping == Stepping::Individual) {
-    if (domain_.distributed())
-      throw SimulationError("scene '" + scene_.name + "': individual time steps ([time] stepping "
-                            "= \"individual\") run on one rank so far; use stepping = "
-                            "\"global\" on " + std::to_string(domain_.comm().size()) + " ranks");
+  if (scene_.time.stepping == Stepping::Individual)
     bins_.emplace(scene_.time.limiterFactor, scene_.time.dtMax);
-  }
   // A distributed run: the flaws are drawn from the whole body (each rank keeps the table, found
   // by particle id, so flaws travel with their particle; such scenes are built whole on every
   // rank, bodies.hpp), then each rank keeps its share.
@@ -298,6 +293,12 @@ std::vector<std::uint64_t> Simulation::particleCosts() const {
   for (std::size_t i = 0; i < p_.numReal; ++i) {
     const bool solid = materials_[static_cast<std::size_t>(p_.material[i])].strength.has_value();
     cost[i] = (counted ? 1 + ws_.neighbourCount[i] : 1) * (solid ? 3u : 2u);
+  }
+  // Individual time steps: a particle on bin b is evaluated 2^b times a block.
+  if (const Field* bin = bins_ ? p_.field(TimeBins::kBinField) : nullptr) {
+    const std::vector<double>& b = p_.column(*bin, 0);
+    for (std::size_t i = 0; i < p_.numReal; ++i)
+      cost[i] <<= std::clamp(static_cast<int>(b[i]), 0, 20);
   }
   return cost;
 }

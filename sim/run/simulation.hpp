@@ -167,6 +167,11 @@ class Simulation {
   // After the listed particles' steps ended: their new bins (the limiter's floor from their
   // neighbours) and the wake-up of neighbours on too long a step.
   void rebin(const std::vector<std::size_t>& ended);
+  // A distributed run: the other ranks' particles that began a step wake this rank's neighbours
+  // (raising `wanted`, the bin each particle must take at least).
+  void wakeFromHalos(std::vector<int>& wanted);
+  // The earliest end of a step in progress on any rank (a collective).
+  TimeBins::Tick nextStepEnd() const;
 
   Scene scene_;
   DistributedDomain domain_;

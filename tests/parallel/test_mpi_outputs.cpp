@@ -176,6 +176,57 @@ TEST_F(MpiOutputs, RestartOnOneRankFewerMatchesAnUninterruptedRun) {
               world()->size(), world()->size() - 1, d.field.c_str(), d.relative);
 }
 
+// Individual time steps (docs/time_steps.md): a run on every rank, cut at its snapshot 2 and
+// resumed on one rank fewer, ends as the uninterrupted one-rank run does (each particle's bin,
+// own step and last evaluation are in the snapshots).
+TEST(MpiIndividualSteps, RestartOnOneRankFewerMatchesAnUninterruptedOneRankRun) {
+  std::string source = sceneSource();
+  const std::string key = "t_end = 0.02\n";
+  source.replace(source.find(key), key.size(), key + "stepping = \"individual\"\n");
+  const fs::path root = fs::path(EJECTA_BINARY_DIR) /
+                        ("mpi_individual_steps_np" + std::to_string(world()->size()));
+  auto runInto = [&](const fs::path& dir, std::shared_ptr<const Communicator> ranks) {
+    RunOptions options;
+    options.outDir = dir.string();
+    options.sceneSource = source;
+    options.threads = 1;
+    options.ranks = std::move(ranks);
+    return runScene(parseScene(source, "test_blast.toml"), options);
+  };
+  if (world()->isRoot()) {
+    fs::remove_all(root);
+    const RunOutcome one = runInto(root / "one_rank", nullptr);
+    ASSERT_TRUE(one.ok) << one.error;
+  }
+  barrier();
+  const fs::path cut = root / "cut";
+  const RunOutcome r = runInto(cut, world());
+  EXPECT_TRUE(r.ok) << r.error;
+  barrier();
+  if (world()->isRoot()) {
+    ASSERT_TRUE(fs::remove(cut / "snapshots" / "snap_0003.h5"));
+    ASSERT_TRUE(fs::remove(cut / "snapshots" / "snap_0004.h5"));
+  }
+  barrier();
+  const bool resumes = world()->rank() < world()->size() - 1;
+  const auto part = world()->split(resumes ? 0 : 1);
+  if (resumes) {
+    RunOptions options;
+    options.threads = 1;
+    options.ranks = part;
+    const RunOutcome resumed = restartRun(cut.string(), options);
+    EXPECT_TRUE(resumed.ok) << resumed.error;
+  }
+  barrier();
+  if (!world()->isRoot()) return;
+  const FieldDifference d = compareParticles(snapshotById(root / "one_rank" / "snapshots" / "snap_0004.h5"),
+                                             snapshotById(cut / "snapshots" / "snap_0004.h5"));
+  EXPECT_LE(d.relative, kTolerance) << d.field;
+  EXPECT_EQ(summary(root / "one_rank")["steps"], summary(cut)["steps"]);
+  std::printf("[ ranks %d, resumed on %d ] individual steps, snapshot 4: worst field %s differs "
+              "by %.2e\n", world()->size(), world()->size() - 1, d.field.c_str(), d.relative);
+}
+
 // Poisons one particle (by id) at the end of a step once the run passes `time`: a bad state that
 // only the rank holding the particle can see.
 class PoisonOneParticle : public PhysicsPackage {

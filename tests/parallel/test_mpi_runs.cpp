@@ -94,21 +94,34 @@ TEST(MpiRuns, DelayedDepositSpanningRanks) {
                                  "energy_deposits[0].time=0.004 s", "time.t_end=0.02 s"}));
 }
 
-// Individual time steps run on one rank so far (docs/time_steps.md): on more, every rank stops
-// at once with a message saying so, before any step (no rank left waiting in a collective).
-TEST(MpiRuns, IndividualTimeStepsAreRefusedWithAReason) {
-  const Scene scene = sceneFile("verification/sod_1d.toml", {"time.stepping=individual"});
-  MaterialTable materials = MaterialTable::fromScene(scene);
-  ParticleSet particles = buildParticles(scene, materials, world().get());
-  try {
-    Simulation sim(scene, std::move(particles), std::move(materials), 1, world());
-    ADD_FAILURE() << "a run with individual time steps started on " << world()->size() << " ranks";
-  } catch (const SimulationError& e) {
-    const std::string what = e.what();
-    EXPECT_NE(what.find("individual time steps"), std::string::npos) << what;
-    EXPECT_NE(what.find("stepping = \"global\""), std::string::npos) << what;
-  }
-  EXPECT_TRUE(world()->allTrue(true));  // every rank got here
+// Individual time steps (docs/time_steps.md): each particle's bin, its step's ends and its
+// start values travel with it; the sub-steps end where the earliest step on any rank ends, and
+// a particle that begins a step wakes its neighbours on other ranks through their halos.
+TEST(MpiRuns, IndividualTimeStepsSedov2d) {
+  expectSameAsOneRank(sceneFile("verification/sedov_2d.toml",
+                                {"bodies[0].spacing=0.025", "energy_deposits[0].width=0.05",
+                                 "time.t_end=0.03 s", "time.stepping=individual"}));
+}
+
+TEST(MpiRuns, IndividualTimeStepsPeriodicBlast) {
+  std::string source = periodicBlastScene();
+  const std::string key = "t_end = 0.02\n";
+  source.replace(source.find(key), key.size(), key + "stepping = \"individual\"\n");
+  expectSameAsOneRank(parseScene(source, "test_blast.toml"));
+}
+
+TEST(MpiRuns, IndividualTimeStepsImpactRzWithStrengthAndFracture) {
+  expectSameAsOneRank(sceneFile("impact_rz.toml",
+                                {"bodies[0].spacing=0.5 m", "bodies[1].spacing=1.5 m",
+                                 "bodies[2].spacing=1.5 m", "time.t_end=0.6 ms",
+                                 "time.stepping=individual"}));
+}
+
+TEST(MpiRuns, IndividualTimeStepsAcrossADelayedDeposit) {
+  expectSameAsOneRank(sceneFile("verification/sedov_2d.toml",
+                                {"bodies[0].spacing=0.025", "energy_deposits[0].width=0.1",
+                                 "energy_deposits[0].time=0.004 s", "time.t_end=0.02 s",
+                                 "time.stepping=individual"}));
 }
 
 }  // namespace
