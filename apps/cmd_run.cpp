@@ -1,4 +1,5 @@
 // `ejecta run`: load a scene (or the embedded default), run it, write outputs, print a summary.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -85,6 +86,15 @@ void printSummary(const RunOutcome& r, const HookResults& hooks, const std::stri
               s.wallSeconds, s.threads);
   std::printf("  energy: initial %.8g J, final %.8g J, relative error %.3g\n", s.energy.initial,
               s.energy.final, s.energy.relativeError);
+  // Individual time steps (docs/time_steps.md): the steps above are sub-steps; the cost is the
+  // particle-steps.
+  if (s.has("particle_updates"))
+    std::printf("  individual time steps: %lld particle-steps (%.3g per particle; %.3g of "
+                "particles x sub-steps)\n",
+                static_cast<long long>(s.integer("particle_updates")),
+                static_cast<double>(s.integer("particle_updates")) / static_cast<double>(s.particles),
+                static_cast<double>(s.integer("particle_updates")) /
+                    (static_cast<double>(s.particles) * static_cast<double>(std::max(s.steps, 1L))));
   // The crater (fields/crater_summary.hpp).
   if (const auto& c = hooks.crater) {
     if (c->found)
