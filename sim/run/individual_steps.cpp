@@ -208,13 +208,16 @@ void Simulation::stepIndividually(double limit) {
   evaluateDerivatives(&active);
 
   bins_->finishSteps(p_, leapfrog_, active, dim);
-  evaluateEquationOfState();
+  // The others' state is that of this sub-step's evaluation already.
+  evaluateEquationOfState(&activeMask_);
   for (const auto& package : packages_) package->finalize(p_, packageContext(&activeMask_));
   time_ = stateTime_;
   ++step_;
   lastDt_ = time_ - before;
   const double smallest = ownTimesteps(active);
-  checkHealth(smallest);
+  // Between synchronisation points only the particles that stepped have a new state (the
+  // others' are predictions from states already checked); at a block's end, all of them.
+  checkHealth(smallest, bins_->synchronised() ? nullptr : &active);
   if (bins_->synchronised()) {
     // Every particle is at the block's end: what a restart from here needs of their last
     // evaluation goes into the stored fields.

@@ -57,7 +57,9 @@ class PhysicsPackage {
   virtual void limitKicks(Leapfrog&, const PackageContext&) {}
   // After the drift, on the predicted state, before the pair passes see it.
   virtual void afterDrift(ParticleSet&, const PackageContext&) {}
-  // After the equation of state of every evaluated state (pressures and sound speeds set).
+  // After the equation of state of every evaluated state (pressures and sound speeds set); with
+  // individual time steps also after the end of a sub-step for its active particles alone
+  // (c.active): an update must touch only those then (it is not idempotent: it scales P or cs).
   virtual void updateState(ParticleSet&, const PackageContext&) {}
   // The rates of the package's evolved fields for the real particles, after the pair passes.
   virtual void evaluateDerivatives(ParticleSet&, const PackageContext&) {}

@@ -335,17 +335,17 @@ void Simulation::sortForLocality() {
   }
 }
 
-void Simulation::evaluateEquationOfState() {
+void Simulation::evaluateEquationOfState(const ParticleMask* only) {
   materialMembers_.assign(materials_.size(), {});
   for (std::size_t i = 0; i < p_.numReal; ++i)
-    materialMembers_[static_cast<std::size_t>(p_.material[i])].push_back(i);
+    if (selected(only, i)) materialMembers_[static_cast<std::size_t>(p_.material[i])].push_back(i);
   for (std::size_t m = 0; m < materials_.size(); ++m) {
     const std::vector<std::size_t>& members = materialMembers_[m];
     materials_[m].eos->evaluate(p_.rho.data(), p_.u.data(), p_.P.data(), p_.cs.data(),
                                 members.data(), members.size());
   }
-  applyTemperature(p_, materials_);
-  const PackageContext context = packageContext();
+  applyTemperature(p_, materials_, only);
+  const PackageContext context = packageContext(only);
   for (const auto& package : packages_) package->updateState(p_, context);
 }
 
@@ -478,16 +478,24 @@ void Simulation::stopIfAnyRankFailed(const std::string& local) const {
   if (!message.empty()) throw SimulationError(message);
 }
 
-void Simulation::checkHealth(double dt) const {
+void Simulation::checkHealth(double dt, const std::vector<std::size_t>* only) const {
   const double dtMin = scene_.time.dtMin > 0.0 ? scene_.time.dtMin : 1e-12 * scene_.time.tEnd;
   std::vector<const double*> watched = evolvedColumns(p_);
   watched.push_back(p_.P.data());
   std::size_t firstNonFinite = p_.numReal;
-  for (const double* column : watched)
-    firstNonFinite = std::min(firstNonFinite, firstNonFiniteIndex(column, p_.numReal));
+  if (only) {
+    for (std::size_t i : *only)
+      for (const double* column : watched)
+        if (!std::isfinite(column[i])) firstNonFinite = std::min(firstNonFinite, i);
+  } else {
+    for (const double* column : watched)
+      firstNonFinite = std::min(firstNonFinite, firstNonFiniteIndex(column, p_.numReal));
+  }
   // This rank's first problem; every rank then stops with the lowest rank's.
   auto problem = [&]() -> std::string {
-    for (std::size_t i = 0; i < p_.numReal; ++i) {
+    const std::size_t count = only ? only->size() : p_.numReal;
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::size_t i = only ? (*only)[k] : k;
       if (i == firstNonFinite) return failureMessage(i, "non-finite state (NaN or infinity)");
       if (!(p_.rho[i] > 0.0)) return failureMessage(i, "non-positive density");
       if (p_.u[i] < 0.0 &&

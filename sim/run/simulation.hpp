@@ -137,9 +137,14 @@ class Simulation {
   // Ghosts, halos, the density pass, the equation of state and the force pass; with `active`
   // (individual steps) the passes and the packages' derivatives for those particles only.
   void evaluateDerivatives(const std::vector<std::size_t>* active = nullptr);
-  void evaluateEquationOfState();
+  // Pressure, sound speed and temperature from rho and u, then the packages' state updates;
+  // `only` (individual time steps): just the particles it selects (every package's
+  // updateState must honour PackageContext::active then: the updates are not idempotent).
+  void evaluateEquationOfState(const ParticleMask* only = nullptr);
   void computeNextTimestep();
-  void checkHealth(double dt) const;
+  // Stops the run (SimulationError on every rank) on a bad state or a step below dt_min; `only`:
+  // check just those particles (ascending), the others being known good.
+  void checkHealth(double dt, const std::vector<std::size_t>* only = nullptr) const;
   // Throws SimulationError naming the step, time, `reason` and particle i's state.
   [[noreturn]] void failAt(std::size_t i, const std::string& reason) const;
   std::string failureMessage(std::size_t i, const std::string& reason) const;

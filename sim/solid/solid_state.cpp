@@ -91,22 +91,24 @@ FlawSet distributeMaterialFlaws(const ParticleSet& initial, const MaterialTable&
   return set;
 }
 
-void applyTemperature(ParticleSet& p, const MaterialTable& materials) {
+void applyTemperature(ParticleSet& p, const MaterialTable& materials, const ParticleMask* only) {
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.numReal; ++i)
-    p.temperature[i] = materials[static_cast<std::size_t>(p.material[i])].thermal.temperature(p.u[i]);
+    if (selected(only, i))
+      p.temperature[i] = materials[static_cast<std::size_t>(p.material[i])].thermal.temperature(p.u[i]);
 }
 
-void applyDamageToTension(ParticleSet& p) {
+void applyDamageToTension(ParticleSet& p, const ParticleMask* only) {
   if (!p.hasFracture()) return;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.numReal; ++i)
-    if (p.P[i] < 0.0) p.P[i] *= 1.0 - p.damage(i);
+    if (selected(only, i) && p.P[i] < 0.0) p.P[i] *= 1.0 - p.damage(i);
 }
 
-void applySolidSoundSpeed(ParticleSet& p, const MaterialTable& materials) {
+void applySolidSoundSpeed(ParticleSet& p, const MaterialTable& materials, const ParticleMask* only) {
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.numReal; ++i) {
+    if (!selected(only, i)) continue;
     const Material& mat = materials[static_cast<std::size_t>(p.material[i])];
     if (!mat.strength) continue;
     const double c2 = p.cs[i] * p.cs[i] + 4.0 * mat.strength->shearModulus / (3.0 * p.rho[i]);

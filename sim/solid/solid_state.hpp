@@ -29,12 +29,14 @@ FlawSet distributeMaterialFlaws(const ParticleSet& initial, const MaterialTable&
 
 // After the equation of state, per real particle:
 // the temperature from u (each material's thermal model);
-void applyTemperature(ParticleSet& p, const MaterialTable& materials);
+void applyTemperature(ParticleSet& p, const MaterialTable& materials,
+                      const ParticleMask* only = nullptr);
 // damaged particles' tension scaled by (1 - D) (no-op without fracture fields);
-void applyDamageToTension(ParticleSet& p);
+void applyDamageToTension(ParticleSet& p, const ParticleMask* only = nullptr);
 // for solids the sound speed raised to the longitudinal speed sqrt(c^2 + 4G/(3 rho)), the
 // signal speed the time step and the viscosity must respect.
-void applySolidSoundSpeed(ParticleSet& p, const MaterialTable& materials);
+void applySolidSoundSpeed(ParticleSet& p, const MaterialTable& materials,
+                          const ParticleMask* only = nullptr);
 
 // Radial return of the stored deviatoric stress S to each material's flow stress Y. The force
 // uses (1 - D) S, so the effective stress then sits on the damaged yield surface (1 - D) Y;

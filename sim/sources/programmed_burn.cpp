@@ -92,10 +92,12 @@ void assignLightingTimes(const std::vector<DetonationSpec>& detonations, Geometr
   }
 }
 
-void applyProgrammedBurn(ParticleSet& p, const BurnTable& burn, double eta, double t) {
+void applyProgrammedBurn(ParticleSet& p, const BurnTable& burn, double eta, double t,
+                         const ParticleMask* only) {
   if (!p.hasBurn()) return;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.numReal; ++i) {
+    if (!selected(only, i)) continue;
     const auto m = static_cast<std::size_t>(p.material[i]);
     const double D = burn.velocity[m];
     if (D <= 0.0) continue;

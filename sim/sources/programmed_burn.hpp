@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "sim/solid/materials.hpp"
+#include "sim/state/particle_mask.hpp"
 #include "sim/state/particles.hpp"
 #include "sim/sources/source_specs.hpp"
 #include "sim/state/geometry.hpp"
@@ -42,6 +43,7 @@ void assignLightingTimes(const std::vector<DetonationSpec>& detonations, Geometr
 
 // Advances the burn fractions to time t (never decreasing): max(F, F1, F2), and scales the pressure
 // of the real explosive particles by them. eta is the scene's h = eta dx.
-void applyProgrammedBurn(ParticleSet& p, const BurnTable& burn, double eta, double t);
+void applyProgrammedBurn(ParticleSet& p, const BurnTable& burn, double eta, double t,
+                         const ParticleMask* only = nullptr);
 
 }  // namespace ejecta

@@ -22,8 +22,8 @@ void FracturePackage::limitKicks(Leapfrog& leapfrog, const PackageContext& c) {
   });
 }
 
-void FracturePackage::updateState(ParticleSet& p, const PackageContext&) {
-  applyDamageToTension(p);
+void FracturePackage::updateState(ParticleSet& p, const PackageContext& c) {
+  applyDamageToTension(p, c.active);
 }
 
 void FracturePackage::evaluateDerivatives(ParticleSet& p, const PackageContext& c) {

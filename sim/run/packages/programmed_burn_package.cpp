@@ -11,7 +11,7 @@ void ProgrammedBurnPackage::registerFields(ParticleSet& p) {
 }
 
 void ProgrammedBurnPackage::updateState(ParticleSet& p, const PackageContext& c) {
-  applyProgrammedBurn(p, burn_, eta_, c.time);
+  applyProgrammedBurn(p, burn_, eta_, c.time, c.active);
 }
 
 }  // namespace ejecta

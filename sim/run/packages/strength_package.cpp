@@ -14,7 +14,7 @@ void StrengthPackage::afterDrift(ParticleSet& p, const PackageContext& c) {
 }
 
 void StrengthPackage::updateState(ParticleSet& p, const PackageContext& c) {
-  applySolidSoundSpeed(p, c.materials);
+  applySolidSoundSpeed(p, c.materials, c.active);
 }
 
 void StrengthPackage::finalize(ParticleSet& p, const PackageContext& c) {
