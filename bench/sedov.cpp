@@ -2,11 +2,13 @@
 // particles on a cell-centred cubic lattice, rho0 = 1, m = 1/N, gamma = 5/3, v = 0,
 // u = E0 / (pi^1.5 w^3) exp(-r^2/w^2) + 1e-8 with E0 = 1, w = 0.1, run to t = 0.05
 // (exact shock radius 0.3475, peak density 4).
-// Prints N, steps, mean neighbours, wall time, particle-updates per second (N x steps / wall) and
-// the L1 density error (mean over particles of |rho - rho_exact(r)|).
+// Prints N, steps, mean neighbours, wall time, particle-updates per second (the particle-steps
+// over the wall time: N x steps with global steps, the active particles' updates with
+// individual ones) and the L1 density error (mean over particles of |rho - rho_exact(r)|).
 //
 //   ejecta_bench_sedov [--n 50] [--threads T] [--kernel cubic_spline|wendland_c2|wendland_c4]
 //                      [--eta 1.2] [--t-end 0.05] [--conductivity A] [--balsara 0|1] [--json]
+//                      [--stepping global|individual] [--limiter-factor F]
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -26,7 +28,8 @@ int main(int argc, char** argv) {
   int n = 50, threads = 0;
   double eta = 1.2, tEnd = 0.05, conductivity = 0.0;
   bool balsara = false, json = false;
-  std::string kernel = "cubic_spline";
+  std::string kernel = "cubic_spline", stepping = "global";
+  int limiterFactor = 2;
   bench::Arguments args(argc, argv);
   for (std::string arg; args.next(arg);) {
     auto next = [&args] { return args.value(); };
@@ -38,6 +41,8 @@ int main(int argc, char** argv) {
     else if (arg == "--conductivity") conductivity = std::atof(next());
     else if (arg == "--balsara") balsara = std::atoi(next()) != 0;
     else if (arg == "--json") json = true;
+    else if (arg == "--stepping") stepping = next();
+    else if (arg == "--limiter-factor") limiterFactor = std::atoi(next());
     else { std::fprintf(stderr, "unknown option %s\n", arg.c_str()); return 2; }
   }
 
@@ -53,6 +58,12 @@ int main(int argc, char** argv) {
   scene.sph.conductivity = conductivity;
   scene.sph.balsara = balsara;
   scene.time.tEnd = tEnd;
+  if (stepping != "global" && stepping != "individual") {
+    std::fprintf(stderr, "--stepping must be global or individual, not %s\n", stepping.c_str());
+    return 2;
+  }
+  scene.time.stepping = stepping == "individual" ? Stepping::Individual : Stepping::Global;
+  scene.time.limiterFactor = limiterFactor;
   scene.output.snapshots = false;
   const double gamma = 5.0 / 3.0;
   MaterialSpec gas;
@@ -98,18 +109,25 @@ int main(int argc, char** argv) {
     l1 += std::abs(q.rho[k] - sedov.at(r, sim.time()).rho);
   }
   l1 /= static_cast<double>(q.numReal);
-  const double updates = static_cast<double>(N) * static_cast<double>(sim.stepCount()) / wall;
+  const double particleSteps = static_cast<double>(sim.particleUpdates());
+  const double updates = particleSteps / wall;
   if (json) {
     std::printf("{\"N\": %zu, \"steps\": %ld, \"mean_neighbours\": %.1f, \"wall_seconds\": %.3f, "
                 "\"threads\": %d, \"particle_updates_per_second\": %.4g, "
                 "\"updates_per_second_per_core\": %.4g, \"L1_density\": %.4f, "
-                "\"energy_error\": %.3g, \"shock_radius_exact\": %.4f}\n",
+                "\"energy_error\": %.3g, \"shock_radius_exact\": %.4f, \"stepping\": \"%s\", "
+                "\"particle_steps\": %.6g}\n",
                 N, sim.stepCount(), sim.meanNeighbours(), wall, nThreads, updates,
-                updates / nThreads, l1, outcome.summary.energy.relativeError, sedov.shockRadius(sim.time()));
+                updates / nThreads, l1, outcome.summary.energy.relativeError,
+                sedov.shockRadius(sim.time()), stepping.c_str(), particleSteps);
   } else {
     std::printf("3D Sedov (SPH-EXA standard problem), kernel %s, eta %.3g\n", kernel.c_str(), eta);
     std::printf("  N                          %zu\n", N);
-    std::printf("  steps                      %ld\n", sim.stepCount());
+    std::printf("  stepping                   %s\n", stepping.c_str());
+    std::printf("  steps                      %ld%s\n", sim.stepCount(),
+                sim.individualSteps() ? " (sub-steps)" : "");
+    std::printf("  particle-steps             %.6g (%.3g N)\n", particleSteps,
+                particleSteps / static_cast<double>(N));
     std::printf("  mean neighbours            %.1f\n", sim.meanNeighbours());
     std::printf("  threads                    %d\n", nThreads);
     std::printf("  wall time                  %.2f s\n", wall);
