@@ -249,7 +249,11 @@ class ProgressLine {
 }  // namespace
 
 int resolveThreads(int requested) {
-  return requested > 0 ? requested : omp_get_max_threads();
+  // The default is the process's at its first use (OMP_NUM_THREADS or every core): a Simulation
+  // lowers OpenMP's own default for a small run (fewer than ~500 particles a thread), which
+  // must not carry over to the runs after it in the same process (verify, sweeps, benches).
+  static const int processDefault = omp_get_max_threads();
+  return requested > 0 ? requested : processDefault;
 }
 
 namespace {

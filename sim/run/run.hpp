@@ -65,7 +65,8 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& options);
 // SceneError naming the snapshot when it holds no scene.
 Scene storedScene(const SnapshotInfo& info, const std::string& snapshotPath);
 
-// Resolves the thread count of RunOptions (0 -> OpenMP default).
+// Resolves the thread count of RunOptions (0 -> the process's OpenMP default at its first use,
+// not a smaller one a previous small run set).
 int resolveThreads(int requested);
 
 }  // namespace ejecta

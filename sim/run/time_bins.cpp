@@ -125,7 +125,9 @@ void TimeBins::beginBlock(double start, double length) {
 
 double TimeBins::timeAt(Tick t) const {
   if (t >= kBlockTicks) return end_;  // the block ends exactly where the run asked
-  return start_ + length_ * std::ldexp(static_cast<double>(t), -kDeepest);
+  // t / 2^kDeepest: a power-of-two scaling, exact (as ldexp, which costs a call per particle).
+  constexpr double kTickScale = 1.0 / static_cast<double>(kBlockTicks);
+  return start_ + length_ * (static_cast<double>(t) * kTickScale);
 }
 
 double TimeBins::stepLength(const ParticleSet& p, std::size_t i) const {
@@ -189,9 +191,14 @@ std::vector<std::size_t> TimeBins::advanceTo(ParticleSet& p, const Leapfrog& lea
   const std::vector<double>& end = p.column(*p.field(kEndField), 0);
   const double tNow = timeAt(now_), tNext = timeAt(next);
   const double delta = tNext - tNow;
-  // Per particle: time since its step began, half its step, whether its step ends now.
-  std::vector<double> elapsed(n), half(n);
-  std::vector<unsigned char> ends(n);
+  // Per particle: time since its step began, half its step, whether its step ends now (scratch
+  // kept between sub-steps: every entry is written below).
+  std::vector<double>& elapsed = elapsed_;
+  std::vector<double>& half = half_;
+  std::vector<unsigned char>& ends = ends_;
+  elapsed.resize(n);
+  half.resize(n);
+  ends.resize(n);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     const double t0 = timeAt(static_cast<Tick>(begin[i]));

@@ -120,6 +120,8 @@ class TimeBins {
   std::vector<Advanced> advanced_;
   bool summation_ = false, tiedH_ = false;
   std::uint64_t updates_ = 0;
+  std::vector<double> elapsed_, half_;  // advanceTo's scratch
+  std::vector<unsigned char> ends_;
 };
 
 }  // namespace ejecta
