@@ -1,7 +1,8 @@
 #pragma once
 // Individual time steps: every particle advances on its own time bin (GADGET-2, Springel 2005,
-// sec. 5; SWIFT, Schaller et al. 2024, sec. 6), so the few particles that need a short step (a
-// deposit's hot core, a shock front, a cracking solid) no longer set the step of all the others.
+// MNRAS 364 1105; SWIFT, Schaller et al. 2024, MNRAS 530 2378), so the few particles that need a
+// short step (a deposit's hot core, a shock front, a cracking solid) no longer set the step of
+// all the others (docs/time_steps.md).
 //
 // Time runs in blocks that end at the run's synchronisation points (outputs, t_end, delayed
 // deposits), where every particle is at the same time. A block of length T holds 2^kDeepest
