@@ -15,6 +15,7 @@
 #include "fields/measure_crater.hpp"
 #include "fields/vdb_grids.hpp"
 #include "sim/io/snapshot.hpp"
+#include "sim/io/snapshot_checks.hpp"
 #include "sim/run/run.hpp"
 
 namespace fs = std::filesystem;
@@ -77,6 +78,7 @@ int craterCommand(const CraterArgs& args) {
     SnapshotInfo info;
     const ParticleSet particles = readSnapshot(args.input, info);
     const Scene scene = storedScene(info, args.input);
+    checkSnapshotMaterials(particles, scene.materials.size(), args.input);
     const auto found = fields::craterSetupFromScene(scene);
     if (!found)
       throw std::runtime_error(args.input + ": scene '" + scene.name + "' is not an impact "

@@ -7,6 +7,7 @@
 #include "fields/grid_set.hpp"
 #include "fields/vdb_grids.hpp"
 #include "sim/io/snapshot.hpp"
+#include "sim/io/snapshot_checks.hpp"
 #include "sim/run/run.hpp"
 
 namespace ejecta::app {
@@ -26,6 +27,7 @@ int fieldsCommand(const FieldsArgs& args) {
   SnapshotInfo info;
   const ParticleSet particles = readSnapshot(args.snapshot, info);
   const Scene scene = storedScene(info, args.snapshot);
+  checkSnapshotMaterials(particles, scene.materials.size(), args.snapshot);
   fields::GridRequest request = fields::GridRequest::fromScene(scene.fields);
   if (!args.grids.empty()) request.grids = args.grids;
   if (!args.voxel.empty()) request.voxel = parseQuantity(args.voxel, Dimension::Length);

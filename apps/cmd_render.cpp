@@ -15,6 +15,8 @@
 #include "core/units.hpp"
 #include "fields/grid_slice.hpp"
 #include "sim/io/snapshot.hpp"
+#include "sim/io/snapshot_checks.hpp"
+#include "sim/run/run.hpp"
 
 namespace fs = std::filesystem;
 
@@ -208,6 +210,9 @@ int renderCommand(const RenderArgs& args) {
   const fs::path snapshot = snapshotOf(input);
   SnapshotInfo info;
   const ParticleSet p = readSnapshot(snapshot.string(), info);
+  if (!info.sceneSource.empty())
+    checkSnapshotMaterials(p, storedScene(info, snapshot.string()).materials.size(), snapshot.string());
+  if (p.numReal == 0) throw std::invalid_argument(snapshot.string() + ": the snapshot holds no particles to draw");
   ParticleImageOptions options;
   if (!args.field.empty()) options.field = args.field;
   options.log = args.log;

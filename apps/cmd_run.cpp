@@ -1,5 +1,6 @@
 // `ejecta run`: load a scene (or the embedded default), run it, write outputs, print a summary.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -8,6 +9,7 @@
 #include <sstream>
 
 #include "apps/commands.hpp"
+#include "apps/interrupt.hpp"
 #include "sim/parallel/communicator.hpp"
 #include "coupling/run_images.hpp"
 #include "coupling/run_thermal.hpp"
@@ -15,6 +17,8 @@
 #include "fields/run_outputs.hpp"
 #include "sim/setup/embedded_scenes.hpp"
 #include "sim/run/run.hpp"
+#include "sim/run/run_directory.hpp"
+#include "sim/setup/memory_estimate.hpp"
 #include "sim/setup/scene.hpp"
 
 namespace fs = std::filesystem;
@@ -26,6 +30,10 @@ using namespace ejecta::coupling;  // the in-situ chain (coupling/)
 namespace {
 
 std::string readText(const std::string& path) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec))
+    throw SceneError(path + ": is a directory, not a scene file (to resume the run in it: "
+                     "ejecta run --restart " + path + ")");
   std::ifstream in(path);
   if (!in) throw SceneError(path + ": cannot open scene file");
   std::ostringstream s;
@@ -82,10 +90,14 @@ struct HookResults {
 void printSummary(const RunOutcome& r, const HookResults& hooks, const std::string& outDir) {
   const RunSummary& s = r.summary;
   std::printf("ejecta: %s %s: %zu particles, %ld steps to t = %.6g s in %.2f s wall (%d threads)\n",
-              s.scene.c_str(), r.ok ? "completed" : "FAILED", s.particles, s.steps, s.tEnd,
+              s.scene.c_str(), !r.ok ? "FAILED" : r.interrupted ? "INTERRUPTED" : "completed", s.particles, s.steps, s.tEnd,
               s.wallSeconds, s.threads);
-  std::printf("  energy: initial %.8g J, final %.8g J, relative error %.3g\n", s.energy.initial,
-              s.energy.final, s.energy.relativeError);
+  if (std::isfinite(s.energy.relativeError))
+    std::printf("  energy: initial %.8g J, final %.8g J, relative error %.3g\n", s.energy.initial,
+                s.energy.final, s.energy.relativeError);
+  else
+    std::printf("  energy: final %.8g J (no relative error: the run stopped before its initial "
+                "energy was taken)\n", s.energy.final);
   // Individual time steps (docs/time_steps.md): the steps above are sub-steps; the cost is the
   // particle-steps.
   if (s.has("particle_updates"))
@@ -132,6 +144,28 @@ void printSummary(const RunOutcome& r, const HookResults& hooks, const std::stri
       std::printf("  charts: %s\n", s.text("charts_note").c_str());
   }
   if (!r.ok) std::fprintf(stderr, "ejecta: run failed: %s\n", r.error.c_str());
+  if (r.interrupted) std::fprintf(stderr, "ejecta: %s\n", s.message.c_str());
+}
+
+// The exit status of a run (documented in `ejecta --help` and the README).
+int exitStatus(const RunOutcome& r) {
+  if (!r.ok) return 2;
+  if (r.interrupted) return InterruptGuard::exitCode();
+  return 0;
+}
+
+// A new run never writes over another's outputs: its later snapshots would survive among the
+// new ones, and a restart would resume the old run (docs/robustness.md).
+void prepareOutputDirectory(const std::string& outDir, bool overwrite) {
+  const auto earlier = findEarlierRun(outDir);
+  if (!earlier) return;
+  if (!overwrite)
+    throw std::runtime_error(earlier->describe(outDir) +
+                             "; give --overwrite to replace it, --restart " + outDir +
+                             " to resume it, or another --out");
+  const std::size_t removed = clearRunOutputs(outDir);
+  std::fprintf(stderr, "ejecta: --overwrite: removed the earlier run's %zu output(s) from '%s'\n",
+               removed, outDir.c_str());
 }
 
 }  // namespace
@@ -149,6 +183,8 @@ int runCommand(const RunArgs& args) {
   // Under mpirun: every rank of MPI_COMM_WORLD (one rank otherwise); rank 0 prints.
   options.ranks = worldCommunicator();
   const bool root = options.ranks->isRoot();
+  const InterruptGuard interrupts;
+  options.interrupted = [] { return InterruptGuard::received() != 0; };
   auto hooks = std::make_shared<HookResults>();
   options.configure = [charts = args.charts, hooks](const Scene& scene, RunOptions& o) {
     fields::addFieldOutputs(o, scene, [hooks](const fields::CraterSummary& c) { hooks->crater = c; });
@@ -161,7 +197,7 @@ int runCommand(const RunArgs& args) {
                                "do not give a SCENE or --set with it");
     const RunOutcome r = restartRun(args.restartDir, options);
     if (root) printSummary(r, *hooks, args.restartDir);
-    return r.ok ? 0 : 2;
+    return exitStatus(r);
   }
   std::string source, path;
   if (args.scene.empty()) {
@@ -183,9 +219,14 @@ int runCommand(const RunArgs& args) {
       std::fprintf(stderr, "ejecta: running '%s' (%s) -> %s\n", scene.name.c_str(), path.c_str(),
                    options.outDir.c_str());
   }
+  // Refusals come before --overwrite clears anything: a run that cannot start keeps the old one.
+  requireRunMemory(scene, options.ranks->size());
+  if (root) prepareOutputDirectory(options.outDir, args.overwrite);
+  // Every rank waits for rank 0's clearing before any writes (a collective).
+  if (options.ranks->size() > 1) options.ranks->maximum(0.0);
   const RunOutcome r = runScene(scene, options);
   if (root) printSummary(r, *hooks, options.outDir);
-  return r.ok ? 0 : 2;
+  return exitStatus(r);
 }
 
 }  // namespace ejecta::app

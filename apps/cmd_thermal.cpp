@@ -22,6 +22,7 @@
 #include "radiation/thermal_study.hpp"
 #include "sim/run/run.hpp"
 #include "sim/io/snapshot.hpp"
+#include "sim/io/snapshot_checks.hpp"
 
 namespace ejecta::app {
 
@@ -128,6 +129,7 @@ int thermalCommand(const ThermalArgs& args) {
     } catch (const std::exception&) {
       // No stored scene: the groups are "material<m>" and every material takes the default.
     }
+    if (!materialNames.empty()) checkSnapshotMaterials(particles, materialNames.size(), in.snapshot);
     const SnapshotEmitterOptions options = emitterOptionsFor(study, materialNames);
     SnapshotEmitterStats stats;
     emitters = emittersFromParticles(particles, info.geometry, options, &stats);

@@ -23,6 +23,7 @@ struct RunArgs {
   std::string restartDir;             // --restart RUN_DIR
   bool quiet = false;
   bool charts = true;                 // --no-charts: CSVs only (no matplotlib start-ups)
+  bool overwrite = false;             // --overwrite: replace an earlier run in outDir
 };
 int runCommand(const RunArgs& args);
 

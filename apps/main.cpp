@@ -1,16 +1,59 @@
 // ejecta: hypervelocity-impact and subsurface-explosion simulation. See README.md.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <optional>
+#include <string>
+#include <thread>
 
 #include "apps/commands.hpp"
 #include "apps/launch_check.hpp"
 #include "sim/parallel/communicator.hpp"
 
+namespace {
+
+// Thread and job counts: at least 1, at most 4 per core of this machine (oversubscription past
+// that only slows a run; 100000 is a typo).
+CLI::Validator countPerCore(const char* what) {
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const int most = static_cast<int>(4 * cores);
+  return CLI::Validator(
+      [most, cores, what](std::string& text) -> std::string {
+        int n = 0;
+        if (!CLI::detail::lexical_cast(text, n) || n < 1 || n > most)
+          return std::string(what) + " must be a whole number from 1 to " + std::to_string(most) +
+                 " (4 per core of the " + std::to_string(cores) + " here), not '" + text + "'";
+        return {};
+      },
+      "1-" + std::to_string(most));
+}
+
+// A count from 1 to `most` (rays, zones, pixels), with the reason on refusal.
+CLI::Validator countInRange(const char* what, long long most, const char* why) {
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        long long n = 0;
+        if (!CLI::detail::lexical_cast(text, n) || n < 1 || n > most)
+          return std::string(what) + " must be a whole number from 1 to " + std::to_string(most) +
+                 " (" + why + "), not '" + text + "'";
+        return {};
+      },
+      "1-" + std::to_string(most));
+}
+
+constexpr const char* kExitCodes =
+    "Exit status: 0 success; 1 bad input or a refused request (the message names the file, key "
+    "and reason); 2 a run or study that started and failed (its summary says why); 130 / 143 a "
+    "run stopped by SIGINT / SIGTERM after writing a last snapshot (resume with --restart).";
+
+}  // namespace
+
 int main(int argc, char** argv) {
   CLI::App app{"ejecta: SPH hydrocode for impacts and explosions on asteroids"};
+  app.footer(kExitCodes);
   app.require_subcommand(1);
   app.set_version_flag("--version", "ejecta 0.1.0");
 
@@ -20,7 +63,10 @@ int main(int argc, char** argv) {
   runCmd->add_option("--out,-o", run.outDir, "Output directory (default runs/<scene name>)");
   runCmd->add_option("--set", run.overrides, "Override a scene key: --set sph.kernel=wendland_c2")
       ->take_all();
-  runCmd->add_option("--threads,-j", run.threads, "OpenMP threads (default: all cores)");
+  runCmd->add_option("--threads,-j", run.threads, "OpenMP threads (default: all cores)")
+      ->check(countPerCore("--threads"));
+  runCmd->add_flag("--overwrite", run.overwrite,
+                   "Replace an earlier run in the output directory (its outputs are removed)");
   runCmd->add_option("--restart", run.restartDir, "Resume the run in RUN_DIR from its last snapshot");
   runCmd->add_flag("--quiet,-q", run.quiet, "No progress line");
   runCmd->add_flag("!--no-charts", run.charts, "Write the CSVs but draw no charts");
@@ -30,7 +76,7 @@ int main(int argc, char** argv) {
   verifyCmd->add_option("name", verify.name, "Problem name (see --list), or \"all\" for a markdown table of every problem");
   verifyCmd->add_flag("--list", verify.list, "List the problems");
   verifyCmd->add_flag("--json", verify.json, "Print the error measures as JSON");
-  verifyCmd->add_option("--threads,-j", verify.threads, "OpenMP threads");
+  verifyCmd->add_option("--threads,-j", verify.threads, "OpenMP threads")->check(countPerCore("--threads"));
   verifyCmd->add_option("--set", verify.overrides, "Override a key of the problem's scene")->take_all();
   verifyCmd->add_option("--resolutions", verify.resolutions, "Number of resolutions for the convergence study");
   verifyCmd->add_option("--out,-o", verify.outDir, "Write profiles, the convergence table (CSV) and their charts (PNG) here");
@@ -61,13 +107,16 @@ int main(int argc, char** argv) {
       ->required()->take_all();
   sweepCmd->add_option("--set", sweepArgs.overrides, "Override a key in every variant")->take_all();
   sweepCmd->add_option("--out,-o", sweepArgs.outDir, "Output directory (default runs/<scene name>_sweep)");
-  sweepCmd->add_option("--jobs", sweepArgs.jobs, "Variants run at once (default: one per core)");
+  sweepCmd->add_option("--jobs", sweepArgs.jobs, "Variants run at once (default: one per core)")
+      ->check(countPerCore("--jobs"));
 
   ejecta::app::ViewfactorArgs vfArgs;
   CLI::App* vfCmd = app.add_subcommand("viewfactor", "View factors and incident flux by ray casting (docs/view_factors.md)");
   vfCmd->add_option("geometry", vfArgs.geometry, "Geometry file (TOML)")->required();
-  auto* raysOpt = vfCmd->add_option("--rays", vfArgs.rays, "Rays per receiving patch (fixed count)");
+  auto* raysOpt = vfCmd->add_option("--rays", vfArgs.rays, "Rays per receiving patch (fixed count)")
+                      ->check(countInRange("--rays", 1LL << 32, "rays per patch; the error falls as rays^-1/2"));
   vfCmd->add_option("--tol", vfArgs.tolerance, "Absolute tolerance on view factors (adaptive ray count)")
+      ->check(CLI::Range(1e-7, 0.5).description("1e-7 to 0.5"))
       ->excludes(raysOpt);
   vfCmd->add_flag("--json", vfArgs.json, "Print the report as JSON");
   auto* convergenceOpt = vfCmd->add_option("--convergence", vfArgs.convergenceDir,
@@ -95,7 +144,7 @@ int main(int argc, char** argv) {
   renderCmd->add_option("--field,-f", renderArgs.field, "Particle field (default density)");
   renderCmd->add_option("--view", renderArgs.view, "auto | plane | rz | 3d");
   renderCmd->add_option("--out,-o", renderArgs.out, "Output PNG (default <field>.png; grid files: grid_<G>.png, iso_<G>.png)");
-  renderCmd->add_option("--size", renderArgs.size, "Image size in pixels (default 1024)");
+  renderCmd->add_option("--size", renderArgs.size, "Image size in pixels, 64 to 8192 (default 1024)");
   renderCmd->add_flag("--log", renderArgs.log, "Logarithmic colour scale");
   renderCmd->add_option("--cut", renderArgs.cut, "3D particles and iso-surfaces: none | x | y | z (keep the half below 0)");
   renderCmd->add_option("--cut-at", renderArgs.cutAt, "Where the cut is along its axis (\"2 m\"; default 0)");
@@ -117,7 +166,8 @@ int main(int argc, char** argv) {
   ejecta::app::UndexReferenceArgs undexArgs;
   CLI::App* undexCmd = app.add_subcommand("undex-reference", "Converged 1D Lagrangian reference of a centred charge's gauges (docs/undex.md)");
   undexCmd->add_option("scene", undexArgs.scene, "Scene file (TOML): one explosive body centred on its detonation, one inert body")->required();
-  undexCmd->add_option("--zones", undexArgs.zones, "Zones from the centre to the medium's edge (default 10000)");
+  undexCmd->add_option("--zones", undexArgs.zones, "Zones from the centre to the medium's edge (default 10000)")
+      ->check(countInRange("--zones", 10000000, "zones of the 1D reference"));
   undexCmd->add_option("--out,-o", undexArgs.outDir, "Output directory for gauges_reference.csv (default runs/<scene name>)");
   undexCmd->add_option("--set", undexArgs.overrides, "Override a scene key")->take_all();
 
@@ -129,7 +179,15 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // A mistyped command reads to CLI11 as a stray argument: name it.
+    if (argc > 1 && argv[1][0] != '-' && app.get_subcommands().empty()) {
+      std::string commands;
+      for (const CLI::App* sub : app.get_subcommands({})) commands += (commands.empty() ? "" : ", ") + sub->get_name();
+      std::fprintf(stderr, "ejecta: error: unknown command '%s' (commands: %s)\n", argv[1], commands.c_str());
+      return 1;
+    }
+    // --help and --version exit 0; a bad option is bad input (1), as the documented codes say.
+    return app.exit(e) == 0 ? 0 : 1;
   }
   const std::string subcommand = app.get_subcommands().front()->get_name();
   if (const auto refusal = ejecta::app::multiRankRefusal(subcommand)) {
@@ -155,7 +213,26 @@ int main(int argc, char** argv) {
     if (*undexCmd) return ejecta::app::undexReferenceCommand(undexArgs);
     if (*keysCmd) return ejecta::app::keysCommand(keysArgs);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "ejecta: error: %s\n", e.what());
+    // Every error names the file it is about: the readers name theirs; an error from deeper
+    // down (a solver refusing a patch, an allocator) gets the command's input in front.
+    std::string message = e.what();
+    const std::string input = *runCmd      ? (run.restartDir.empty() ? run.scene : run.restartDir)
+                              : *fieldsCmd ? fieldsArgs.snapshot
+                              : *craterCmd ? craterArgs.input
+                              : *sweepCmd  ? sweepArgs.scene
+                              : *vfCmd     ? vfArgs.geometry
+                              : *thermalCmd ? (thermalArgs.from.empty() ? thermalArgs.scene
+                                                                        : thermalArgs.scene + " --from " + thermalArgs.from)
+                              : *renderCmd  ? renderArgs.input
+                              : *whippleCmd ? whippleArgs.shield
+                              : *undexCmd   ? undexArgs.scene
+                                            : std::string();
+    const bool named = input.empty() || message.find(*thermalCmd ? thermalArgs.scene : input) != std::string::npos ||
+                       (*thermalCmd && !thermalArgs.from.empty() && message.find(thermalArgs.from) != std::string::npos);
+    if (!named) message = input + ": " + message;
+    if (dynamic_cast<const std::bad_alloc*>(&e))
+      message += " (out of memory: the request is larger than this machine; use a coarser resolution)";
+    std::fprintf(stderr, "ejecta: error: %s\n", message.c_str());
     // The other ranks may be waiting in a collective for this one: end them all.
     if (distributed) ejecta::MpiSession::abortAll(1);
     return 1;

@@ -207,6 +207,9 @@ double readNumber(std::string_view text, std::string_view& rest) {
   double value = 0.0;
   const char* begin = text.data() + skip;
   const auto [ptr, ec] = std::from_chars(begin, text.data() + text.size(), value);
+  if (ec == std::errc::result_out_of_range)
+    throw UnitError("the number in '" + std::string(text) +
+                    "' is outside the range of a double (about 1e-308 to 1e308)");
   if (ec != std::errc() || ptr == begin)
     throw UnitError("'" + std::string(text) + "' does not start with a number");
   if (!std::isfinite(value)) throw UnitError("'" + std::string(text) + "' is not finite");

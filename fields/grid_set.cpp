@@ -5,6 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "fields/grid_memory.hpp"
 #include "fields/lattice_merge.hpp"
 #include "fields/revolve.hpp"
 #include "sim/state/particle_fields.hpp"
@@ -36,9 +37,10 @@ ParticleContext ParticleContext::fromScene(const Scene& scene) {
 float GridSet::value(std::size_t g, std::size_t b, int v) const {
   const GridSpec& s = grids[g];
   const float x = lattice.data(b, s.channel)[v];
-  if (!s.shepard) return x;
   const float w = lattice.data(b, 0)[v];
-  return w > 0.0f ? x / w : 0.0f;
+  if (s.shepard) return w > 0.0f ? x / w : 0.0f;
+  if (s.fraction && w > 1.0f) return x / w;
+  return x;
 }
 
 double medianSmoothingLength(const ParticleSet& p) {
@@ -144,6 +146,7 @@ GridSet buildGridSet(const ParticleSet& p, const ParticleContext& ctx, const Gri
       values.push_back(std::move(indicator));
       spec.units = std::string(kDimensionless);
       spec.shepard = request.normalise == FieldNormalisation::Shepard;
+      spec.fraction = true;
     } else {
       values.push_back(particleScalarField(p, name));
       spec.units = std::string(findParticleScalarField(name)->units);
@@ -153,6 +156,9 @@ GridSet buildGridSet(const ParticleSet& p, const ParticleContext& ctx, const Gri
     set.grids.push_back(spec);
   }
 
+  if (!(voxel > 0.0) || !std::isfinite(voxel))
+    throw std::invalid_argument("fields: the voxel size is " + std::to_string(voxel) + " m; it must be positive");
+  requireGridMemory(p, ctx, request, voxel, set.grids.size());
   const std::optional<VoxelBox> clip3 = voxelBox(request, voxel);
   // Every rank's particles, summed at rank 0 of a distributed run (fields/lattice_merge.hpp),
   // which alone goes on to the 3D grids.

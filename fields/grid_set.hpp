@@ -41,6 +41,10 @@ struct GridSpec {
   std::string units;    // SI ("1": dimensionless)
   int channel = 0;      // lattice channel of the plain SPH sum
   bool shepard = false; // value = channel / channel 0
+  // A material's volume fraction: where the plain kernel sum over-fills (sum_j V_j W > 1 in
+  // compressed or disordered material) it is divided by that sum, so no fraction, nor their
+  // total, exceeds 1; at free surfaces (sum < 1) it keeps the plain sum's fall-off.
+  bool fraction = false;
 };
 
 struct GridSet {

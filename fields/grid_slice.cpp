@@ -1,6 +1,7 @@
 // Slices and point samples of a grid file. The one translation unit of the sampler that
 // includes OpenVDB.
 #include "fields/grid_slice.hpp"
+#include "fields/vdb_file.hpp"
 
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Count.h>
@@ -20,25 +21,12 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr int kMaxSamples = 16384;
 
-void initialiseOpenVdb() {
-  static std::once_flag once;
-  std::call_once(once, [] { openvdb::initialize(); });
-}
-
 std::string metaString(const openvdb::MetaMap& m, const std::string& key) {
   const auto p = m.getMetadata<openvdb::StringMetadata>(key);
   return p ? p->value() : std::string();
 }
 
-void openFile(openvdb::io::File& file, const std::string& path) {
-  initialiseOpenVdb();
-  if (!std::filesystem::exists(path)) throw std::runtime_error(path + ": no such grid file");
-  try {
-    file.open();
-  } catch (const openvdb::Exception& e) {
-    throw std::runtime_error(path + ": not a readable OpenVDB file (" + e.what() + ")");
-  }
-}
+void openFile(openvdb::io::File& file, const std::string& path) { openGridFile(file, path); }
 
 void requireGrid(openvdb::io::File& file, const std::string& path, const std::string& name) {
   if (file.hasGrid(name)) return;

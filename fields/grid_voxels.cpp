@@ -2,6 +2,7 @@
 // grids looked up at the kept voxels. The one translation unit of the reader that includes
 // OpenVDB.
 #include "fields/grid_voxels.hpp"
+#include "fields/vdb_file.hpp"
 
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Interpolation.h>
@@ -50,15 +51,8 @@ class LatticeLookup {
 GridVoxels readGridVoxels(const std::string& path, const GridVoxelOptions& options) {
   if (!std::isfinite(options.threshold))
     throw std::invalid_argument(path + ": the voxel threshold must be finite");
-  static std::once_flag once;
-  std::call_once(once, [] { openvdb::initialize(); });
-  if (!std::filesystem::exists(path)) throw std::runtime_error(path + ": no such grid file");
   openvdb::io::File file(path);
-  try {
-    file.open();
-  } catch (const openvdb::Exception& e) {
-    throw std::runtime_error(path + ": not a readable OpenVDB file (" + e.what() + ")");
-  }
+  openGridFile(file, path);
   std::vector<std::string> names;
   for (auto it = file.beginName(); it != file.endName(); ++it) names.push_back(*it);
   if (!file.hasGrid(options.grid)) {

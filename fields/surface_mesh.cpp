@@ -1,6 +1,7 @@
 // Level set -> triangles with OpenVDB's volumeToMesh. The one translation unit of the surface
 // mesher that includes OpenVDB.
 #include "fields/surface_mesh.hpp"
+#include "fields/vdb_file.hpp"
 
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/VolumeToMesh.h>
@@ -23,20 +24,9 @@ Vec3 cross(const Vec3& a, const Vec3& b) {
 double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 
-void initialiseOpenVdb() {
-  static std::once_flag once;
-  std::call_once(once, [] { openvdb::initialize(); });
-}
-
 openvdb::FloatGrid::Ptr readFloatGrid(const std::string& path, const std::string& name) {
-  initialiseOpenVdb();
-  if (!std::filesystem::exists(path)) throw std::runtime_error(path + ": no such grid file");
   openvdb::io::File file(path);
-  try {
-    file.open();
-  } catch (const openvdb::Exception& e) {
-    throw std::runtime_error(path + ": not a readable OpenVDB file (" + e.what() + ")");
-  }
+  openGridFile(file, path);
   if (!file.hasGrid(name)) {
     std::string names;
     for (auto it = file.beginName(); it != file.endName(); ++it) names += (names.empty() ? "" : ", ") + *it;
@@ -156,6 +146,7 @@ std::optional<double> gridVoxelSize(const std::string& path, const std::string& 
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
   try {
+    verifyGridFile(path);
     openvdb::io::File file(path);
     file.open();
     if (!file.hasGrid(grid)) return std::nullopt;

@@ -1,4 +1,5 @@
 #include "fields/vdb_grids.hpp"
+#include "fields/vdb_file.hpp"
 
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Interpolation.h>
@@ -20,11 +21,6 @@ namespace fs = std::filesystem;
 namespace ejecta::fields {
 
 namespace {
-
-void initialiseOpenVdb() {
-  static std::once_flag once;
-  std::call_once(once, [] { openvdb::initialize(); });
-}
 
 openvdb::Vec3d vec(const Point& p) { return {p[0], p[1], p[2]}; }
 Point point(const openvdb::Vec3d& v) { return {v[0], v[1], v[2]}; }
@@ -69,14 +65,8 @@ double metaDouble(const openvdb::MetaMap& m, const std::string& key) {
 }
 
 std::shared_ptr<openvdb::io::File> openFile(const std::string& path) {
-  initialiseOpenVdb();
-  if (!fs::exists(path)) throw std::runtime_error(path + ": no such file");
   auto file = std::make_shared<openvdb::io::File>(path);
-  try {
-    file->open();
-  } catch (const openvdb::Exception& e) {
-    throw std::runtime_error(path + ": not a readable OpenVDB file (" + e.what() + ")");
-  }
+  openGridFile(*file, path);
   return file;
 }
 
@@ -92,7 +82,9 @@ void writeGridFile(const std::string& path, const GridSet& set, const GridFileMe
     grid->setGridClass(openvdb::GRID_FOG_VOLUME);
     tagGrid(*grid, set.grids[g].units, set, meta);
     grid->insertMeta("normalisation",
-                     openvdb::StringMetadata(set.grids[g].shepard ? "shepard" : "none"));
+                     openvdb::StringMetadata(set.grids[g].shepard    ? "shepard"
+                                             : set.grids[g].fraction ? "capped"
+                                                                     : "none"));
     grids.push_back(grid);
   }
   // The material surface: the 0.5 contour of the filled fraction (channel 0), rebuilt as a
@@ -154,8 +146,10 @@ void writeGridFile(const std::string& path, const GridSet& set, const GridFileMe
   try {
     AtomicFileTarget out(target);
     openvdb::io::File file(out.tempPath().string());
+    fileMeta.insertMeta(kSealKey, openvdb::StringMetadata(kSealFormat));
     file.write(grids, fileMeta);
     file.close();
+    sealGridFile(out.tempPath());
     out.commit();
   } catch (const std::exception& e) {
     throw std::runtime_error(path + ": cannot write the VDB file: " + e.what());

@@ -1,6 +1,7 @@
 #include "radiation/mesh.hpp"
 
 #include <algorithm>
+#include <vector>
 #include <limits>
 #include <unordered_map>
 
@@ -139,6 +140,18 @@ void validateMesh(const TriangleMesh& mesh, const std::string& source) {
                       std::to_string(mesh.patchOf[t]) + " of " +
                       std::to_string(mesh.patchNames.size()));
   }
+  // A patch of degenerate triangles only (collinear vertices) receives nothing and has no
+  // direction: refused here, where the file is known, rather than by the solver later.
+  std::vector<double> area(mesh.patchNames.size(), 0.0);
+  std::vector<char> used(mesh.patchNames.size(), 0);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    area[mesh.patchOf[t]] += mesh.triangleArea(t);
+    used[mesh.patchOf[t]] = 1;
+  }
+  for (std::size_t patch = 0; patch < area.size(); ++patch)
+    if (used[patch] && !(area[patch] > 0.0))
+      throw MeshError(source + ": patch '" + mesh.patchNames[patch] +
+                      "' has no area (every triangle of it is degenerate)");
 }
 
 }  // namespace ejecta::radiation

@@ -17,6 +17,8 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string readWholeFile(const fs::path& path) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw MeshError(path.string() + ": is a directory, not a mesh file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw MeshError(path.string() + ": cannot open the mesh file");
   std::ostringstream text;
@@ -357,6 +359,8 @@ TriangleMesh readStl(const fs::path& path, const MeshReadOptions& options) {
 }
 
 TriangleMesh readMesh(const fs::path& path, const MeshReadOptions& options) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw MeshError(path.string() + ": is a directory, not a mesh file");
   const std::string ext = lowercaseExtension(path);
   if (ext == ".obj") return readObj(path, options);
   if (ext == ".stl") return readStl(path, options);

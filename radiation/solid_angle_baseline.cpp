@@ -45,8 +45,14 @@ BaselineResult seedBaseline(const Emitters& emitters, const TriangleMesh& mesh, 
   const double area = mesh.patchArea(patch);
   if (!(area > 0.0))
     throw std::invalid_argument("seed baseline: patch '" + mesh.patchNames[patch] + "' has no area");
-  return seedBaseline(emitters, mesh.patchCentroid(patch), mesh.patchNormal(patch), std::sqrt(area),
-                      options);
+  const Vec3 normal = mesh.patchNormal(patch);
+  if (norm(normal) > 0.0)
+    return seedBaseline(emitters, mesh.patchCentroid(patch), normal, std::sqrt(area), options);
+  // A closed patch (a whole mesh spacecraft given as one patch) faces every way: its summed
+  // normal vanishes. The seed's sum (eq. 4.7) then counts every emitter, in front or not.
+  BaselineOptions everyWay = options;
+  everyWay.frontOnly = false;
+  return seedBaseline(emitters, mesh.patchCentroid(patch), Vec3{1.0, 0.0, 0.0}, std::sqrt(area), everyWay);
 }
 
 }  // namespace ejecta::radiation

@@ -18,6 +18,8 @@ toml::table parseToml(const std::string& text, const std::string& source, config
 }
 
 std::string readInputFile(const fs::path& path, const std::string& what, config::Context::Raise raise) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) raise(path.string() + ": is a directory, not a " + what);
   std::ifstream in(path, std::ios::binary);
   if (!in) raise(path.string() + ": cannot open the " + what);
   std::ostringstream text;

@@ -194,6 +194,14 @@ ThermalStudy parseThermalStudy(const std::string& tomlText, const std::string& s
   const TableReader wall = subTable(top, "wall");
   s.initialTemperature = optPositive(wall, "initial_temperature", Dimension::Temperature, s.initialTemperature);
   s.timeStep = optPositive(wall, "time_step", Dimension::Time, 0.0);
+  // The wall solvers step the whole pass: 1e7 steps is hours per face; a step far below the
+  // pass's length is a unit slip ("1e-15 s"), not a resolution.
+  constexpr double kMaxWallSteps = 1e7;
+  if (s.timeStep > 0.0 && s.approach.duration / s.timeStep > kMaxWallSteps)
+    wall.fail("time_step", "is " + formatQuantity(s.timeStep, Dimension::Time) + ": " +
+                               formatQuantity(s.approach.duration / s.timeStep, Dimension::None) +
+                               " steps over the " + formatQuantity(s.approach.duration, Dimension::Time) +
+                               " pass; at most 1e7 (absent: the pass / 2000)");
   readLimit(subTable(top, "limit"), s.limit);
   const TableReader sizing = subTable(top, "sizing");
   readSizing(sizing, s.sizing);

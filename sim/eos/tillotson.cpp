@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <utility>
 
@@ -46,15 +47,25 @@ const std::array<TillotsonParameters, 5>& libraryTable() {
 }
 
 void validate(const TillotsonParameters& p, const TillotsonOptions& o) {
-  const bool ok = p.rho0 > 0.0 && p.A > 0.0 && p.B >= 0.0 && p.E0 > 0.0 && p.Eiv >= 0.0 &&
-                  p.Ecv > p.Eiv && p.a > 0.0 && p.b >= 0.0 && p.alpha >= 0.0 && p.beta >= 0.0 &&
-                  std::isfinite(p.Ecv) && o.soundSpeedFloorFraction > 0.0 &&
-                  !std::isnan(o.minimumPressure);
-  if (!ok) {
-    throw std::invalid_argument("tillotson '" + p.name +
-                                "': need rho0, A, E0, a > 0; B, b, alpha, beta >= 0; "
-                                "0 <= Eiv < Ecv; a positive sound-speed floor");
-  }
+  // The first constraint that fails, with its value, so the message says which parameter to fix.
+  auto require = [&](bool ok, const char* rule, double value) {
+    if (ok) return;
+    char got[48];
+    std::snprintf(got, sizeof got, "%.6g", value);
+    throw std::invalid_argument("tillotson '" + p.name + "': " + rule + " (got " + got + ")");
+  };
+  require(p.rho0 > 0.0 && std::isfinite(p.rho0), "rho0 must be positive", p.rho0);
+  require(p.A > 0.0 && std::isfinite(p.A), "A must be positive", p.A);
+  require(p.B >= 0.0 && std::isfinite(p.B), "B must be >= 0", p.B);
+  require(p.E0 > 0.0 && std::isfinite(p.E0), "E0 must be positive", p.E0);
+  require(p.a > 0.0 && std::isfinite(p.a), "a must be positive", p.a);
+  require(p.b >= 0.0 && std::isfinite(p.b), "b must be >= 0", p.b);
+  require(p.alpha >= 0.0 && std::isfinite(p.alpha), "alpha must be >= 0", p.alpha);
+  require(p.beta >= 0.0 && std::isfinite(p.beta), "beta must be >= 0", p.beta);
+  require(p.Eiv >= 0.0 && std::isfinite(p.Eiv), "Eiv must be >= 0", p.Eiv);
+  require(p.Ecv > p.Eiv && std::isfinite(p.Ecv), "Ecv must be finite and above Eiv", p.Ecv);
+  require(o.soundSpeedFloorFraction > 0.0, "the sound-speed floor must be positive", o.soundSpeedFloorFraction);
+  require(!std::isnan(o.minimumPressure), "the minimum pressure must not be NaN", o.minimumPressure);
 }
 
 }  // namespace

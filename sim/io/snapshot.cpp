@@ -11,6 +11,7 @@
 
 #include "core/atomic_file.hpp"
 #include "sim/io/hdf5_io.hpp"
+#include "sim/io/snapshot_checks.hpp"
 #include "sim/io/snapshot_rows.hpp"
 #include "sim/state/builtin_fields.hpp"
 
@@ -62,6 +63,13 @@ void writeFields(hid_t group, const ParticleSet& p, FieldOutput output, Geometry
 }
 
 
+// FNV-1a, 64 bit (Fowler, Noll and Vo; http://www.isthe.com/chongo/tech/comp/fnv/).
+std::uint64_t textChecksum(const std::string& text) {
+  std::uint64_t hash = 14695981039346656037ull;
+  for (const unsigned char c : text) hash = (hash ^ c) * 1099511628211ull;
+  return hash;
+}
+
 void writeRootAttributes(hid_t file, const SnapshotInfo& info) {
   writeScalarAttribute(file, "time", info.time);
   writeScalarAttribute<int>(file, "dimension", spatialDimension(info.geometry));
@@ -82,6 +90,11 @@ void writeRestart(hid_t file, const ParticleSet& p, const SnapshotInfo& info, co
   const hid_t g = group.get();
   writeFields(g, p, FieldOutput::Restart, info.geometry, slot);
   writeStringDataset(g, "scene_source", info.sceneSource, "text of the scene file of the run");
+  {
+    // A string dataset cannot carry HDF5's Fletcher-32 filter (it is not chunked): its own sum.
+    const Hid dset = openDataset(g, "scene_source");
+    writeScalarAttribute<std::uint64_t>(dset.get(), "checksum_fnv1a", textChecksum(info.sceneSource));
+  }
   writeScalarAttribute(g, "dt_next", info.dtNext);
   writeScalarAttribute<std::int64_t>(g, "snapshot_index", info.snapshotIndex);
   writeScalarAttribute(g, "next_output_time", info.nextOutputTime);
@@ -136,6 +149,12 @@ void readRestartAttributes(hid_t file, SnapshotInfo& info) {
   info.initialMaterialKinetic = readOptionalArrayAttribute(g, "initial_material_kinetic", owner);
   info.initialMaterialInternal = readOptionalArrayAttribute(g, "initial_material_internal", owner);
   info.sceneSource = readStringDataset(file, "/restart/scene_source");
+  const Hid source = openDataset(file, "/restart/scene_source");
+  if (H5Aexists(source.get(), "checksum_fnv1a") > 0 &&
+      readScalarAttribute<std::uint64_t>(source.get(), "checksum_fnv1a", "'/restart/scene_source'") !=
+          textChecksum(info.sceneSource))
+    throw std::runtime_error("dataset '/restart/scene_source' does not match its checksum (the "
+                             "file is corrupt)");
 }
 
 std::string groupPath(FieldOutput output) {
@@ -209,7 +228,7 @@ void readPackageFields(hid_t file, ParticleSet& p, std::size_t n, RowRange range
 }
 
 // Slice `part` of `parts` equal slices of the stored rows.
-ParticleSet readParticles(hid_t file, int part, int parts) {
+ParticleSet readParticles(hid_t file, int part, int parts, SnapshotValues values) {
   const std::size_t n = particleCount(file);
   const std::size_t k = static_cast<std::size_t>(part), m = static_cast<std::size_t>(parts);
   const std::size_t first = n / m * k + n % m * k / m;
@@ -237,6 +256,7 @@ ParticleSet readParticles(hid_t file, int part, int parts) {
     readField(file, path, p, f, n, range);
   }
   readPackageFields(file, p, n, range);
+  if (values == SnapshotValues::Checked) checkSnapshotParticles(p, range.first);
   return p;
 }
 
@@ -247,6 +267,10 @@ void createSnapshotFile(const std::filesystem::path& tempPath, const ParticleSet
   const Hid fapl = checked(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "cannot create property list");
   // STRONG: closing the file closes everything in it, so it is complete before the rename.
   check(H5Pset_fclose_degree(fapl.get(), H5F_CLOSE_STRONG), "cannot set file close degree");
+  // The 1.8 file format: its superblock and object headers (the attributes: time, step, the
+  // restart state) carry checksums that HDF5 verifies on open; the arrays carry Fletcher-32
+  // (hdf5_io.hpp). Readable by HDF5 1.8 and later, h5py and ParaView.
+  check(H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_V18, H5F_LIBVER_V18), "cannot set the file format");
   Hid file = checked(H5Fcreate(tempPath.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, fapl.get()),
                      H5Fclose, "cannot create temporary file '" + tempPath.string() + "'");
   const RowSlot slot{0, totalRows, true};
@@ -301,6 +325,7 @@ auto readSnapshotFile(const std::string& path, Read&& read) {
     SnapshotInfo info;
     readRootAttributes(file.get(), info);
     readRestartAttributes(file.get(), info);
+    checkSnapshotInfo(info);
     return read(file.get(), std::move(info));
   } catch (const std::exception& e) {
     throw std::runtime_error("snapshot '" + path + "': " + e.what());
@@ -315,7 +340,15 @@ SnapshotInfo readSnapshotInfo(const std::string& path) {
 
 ParticleSet readSnapshot(const std::string& path, SnapshotInfo& info, int part, int parts) {
   return readSnapshotFile(path, [&](hid_t file, SnapshotInfo read) {
-    ParticleSet p = readParticles(file, part, parts);
+    ParticleSet p = readParticles(file, part, parts, SnapshotValues::Checked);
+    info = std::move(read);
+    return p;
+  });
+}
+
+ParticleSet readSnapshot(const std::string& path, SnapshotInfo& info, SnapshotValues values) {
+  return readSnapshotFile(path, [&](hid_t file, SnapshotInfo read) {
+    ParticleSet p = readParticles(file, 0, 1, values);
     info = std::move(read);
     return p;
   });

@@ -60,6 +60,12 @@ ParticleSet readSnapshot(const std::string& path, SnapshotInfo& info);
 // Slice `part` of `parts` near-equal slices of the stored particles (rows in file order): what
 // each rank of a distributed restart reads, so that no rank holds them all.
 ParticleSet readSnapshot(const std::string& path, SnapshotInfo& info, int part, int parts);
+// What the reader does with the particle values it reads: Checked (the default) refuses a file
+// that fails sim/io/snapshot_checks.hpp (NaN, non-positive density, ...); AsStored returns them
+// as written: for looking at the last snapshot of a failed run, which holds the offending state,
+// never for resuming or post-processing one. The run-level info is checked either way.
+enum class SnapshotValues { Checked, AsStored };
+ParticleSet readSnapshot(const std::string& path, SnapshotInfo& info, SnapshotValues values);
 // The snapshot's info (time, step, stored scene...) without its particles.
 SnapshotInfo readSnapshotInfo(const std::string& path);
 

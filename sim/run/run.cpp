@@ -16,9 +16,12 @@
 
 #include "core/atomic_file.hpp"
 #include "sim/io/snapshot.hpp"
+#include "sim/io/snapshot_checks.hpp"
 #include "sim/io/xdmf.hpp"
 #include "sim/run/energy_ledger.hpp"
+#include "sim/run/run_directory.hpp"
 #include "sim/setup/bodies.hpp"
+#include "sim/setup/memory_estimate.hpp"
 #include "sim/sources/gauge_decay.hpp"
 #include "sim/sources/gauges.hpp"
 #include "sim/sph/kernel.hpp"
@@ -260,6 +263,13 @@ namespace {
 
 bool reached(double time, double target) { return time >= target * (1.0 - 1e-12); }
 
+// The interruption hook's answer, agreed by every rank (a signal may reach one rank first).
+bool stopRequested(const Simulation& sim, const RunOptions& options) {
+  const bool mine = options.interrupted && options.interrupted();
+  if (sim.ranks().size() == 1) return mine;
+  return sim.ranks().maximum(mine ? 1.0 : 0.0) > 0.0;
+}
+
 // The time loop shared by fresh and restarted runs. `info` holds the output cadence state.
 // `atSnapshot`: the current state is already on disk (a restart), so no final duplicate.
 // `fresh`: a new run: initialise the simulation and write snapshot 0 first.
@@ -323,6 +333,10 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
       const double limit = std::min(tEnd, info.nextOutputTime);
       sim.step(limit);
       lastWritten = false;
+      if (stopRequested(sim, options)) {
+        outcome.interrupted = true;
+        break;
+      }
       if (sim.depositFirings().size() != firingsSeen) {  // a delayed source fired: new reference
         firingsSeen = sim.depositFirings().size();
         outputs.setCouplingReference(couplingReference(scene, info.initialMaterialKinetic,
@@ -340,7 +354,8 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
       }
     }
     if (!lastWritten) {
-      info.nextOutputTime = tEnd;
+      // An interrupted run's last snapshot keeps the cadence: a restart writes the outputs due.
+      if (!outcome.interrupted) info.nextOutputTime = tEnd;
       snapshot(true);
     }
   } catch (const SimulationError& e) {
@@ -376,11 +391,20 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
   s.energy.initial = info.initialEnergy;
   s.energy.final = t.total();
   const double expected = info.initialEnergy + sim.delayedEnergyAdded();
-  s.energy.relativeError = (t.total() - expected) / std::abs(expected);
+  // A run that stopped before its initial totals were taken has no reference: null in the file.
+  s.energy.relativeError = expected != 0.0 ? (t.total() - expected) / std::abs(expected)
+                           : t.total() == 0.0 ? 0.0
+                                              : std::numeric_limits<double>::quiet_NaN();
   s.momentum.initial = info.initialMomentum;
   s.momentum.final = t.momentum;
-  s.status = outcome.ok ? RunSummary::Status::Completed : RunSummary::Status::Failed;
+  s.status = !outcome.ok           ? RunSummary::Status::Failed
+             : outcome.interrupted ? RunSummary::Status::Interrupted
+                                   : RunSummary::Status::Completed;
   s.message = outcome.error;
+  if (outcome.interrupted)
+    s.message = "interrupted at t = " + std::to_string(sim.time()) + " s (step " +
+                std::to_string(sim.stepCount()) + ") before t_end; resume with ejecta run --restart " +
+                options.outDir;
   s.extras.push_back({"geometry", std::string(geometryName(scene.geometry))});
   s.extras.push_back({"kernel", std::string(kernelName(scene.sph.kernel))});
   s.extras.push_back({"mean_neighbours", sim.meanNeighbours()});
@@ -426,6 +450,7 @@ RunOutcome runSimulation(Simulation& sim, const RunOptions& options) {
 RunOutcome runScene(const Scene& scene, const RunOptions& baseOptions) {
   RunOptions options = baseOptions;
   if (options.configure) options.configure(scene, options);
+  requireRunMemory(scene, options.ranks ? options.ranks->size() : 1);
   const int threads = resolveThreads(options.threads);
   MaterialTable materials = MaterialTable::fromScene(scene);
   // A distributed run builds each rank's slice only (unless its flaws need the whole body).
@@ -434,6 +459,28 @@ RunOutcome runScene(const Scene& scene, const RunOptions& baseOptions) {
   for (const auto& package : options.packages) sim.addPackage(package);
   return runSimulation(sim, options);
 }
+
+namespace {
+
+// A restart resumes the run its last snapshot holds; every earlier snapshot in the directory
+// must be of that run (the same scene text and overrides; the delayed deposits fired differ).
+void requireSameRun(const SnapshotInfo& earlier, const fs::path& earlierPath, const SnapshotInfo& last,
+                    const fs::path& lastPath) {
+  std::string a, b;
+  std::vector<std::string> aOverrides, bOverrides;
+  splitStoredScene(earlier.sceneSource, a, aOverrides);
+  splitStoredScene(last.sceneSource, b, bOverrides);
+  if (earlier.scene == last.scene && a == b && aOverrides == bOverrides && earlier.time <= last.time)
+    return;
+  throw std::runtime_error(
+      "restart: " + earlierPath.string() + " is not of the run in " + lastPath.string() +
+      (earlier.scene != last.scene ? " (scene '" + earlier.scene + "', not '" + last.scene + "')"
+       : earlier.time > last.time  ? " (it is later than the last snapshot)"
+                                   : " (its stored scene or --set overrides differ)") +
+      ": the directory mixes two runs; start the run again with --overwrite or into another --out");
+}
+
+}  // namespace
 
 Scene storedScene(const SnapshotInfo& info, const std::string& snapshotPath) {
   if (info.sceneSource.empty())
@@ -457,6 +504,8 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
   auto index = [](const fs::path& f) { return std::stol(f.stem().string().substr(5)); };
   std::sort(files.begin(), files.end(),
             [&](const fs::path& a, const fs::path& b) { return index(a) < index(b); });
+  // Writes a killed process never finished (docs/robustness.md): nothing reads them.
+  if (!baseOptions.ranks || baseOptions.ranks->isRoot()) removeStaleTemporaries(runDir);
 
   SnapshotInfo info;
   // A distributed restart: each rank reads its slice of the rows (Simulation then decomposes);
@@ -481,6 +530,7 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
   splitStoredScene(info.sceneSource, options.sceneSource, options.overrides, &firings);
   const std::vector<std::string>& overrides = options.overrides;
   Scene scene = parseScene(options.sceneSource, files.back().string() + " (stored scene)", overrides);
+  checkSnapshotMaterials(particles, scene.materials.size(), files.back().string());
   if (options.configure) options.configure(scene, options);
 
   const bool root = !options.ranks || options.ranks->isRoot();
@@ -493,6 +543,7 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
   for (const fs::path& f : root ? files : std::vector<fs::path>{}) {
     SnapshotInfo earlier;
     ParticleSet q = f == files.back() ? ParticleSet{} : readSnapshot(f.string(), earlier);
+    if (f != files.back()) requireSameRun(earlier, f, info, files.back());
     if (f != files.back())
       for (const auto& package : options.packages) package->registerFields(q);
     const double time = f == files.back() ? info.time : earlier.time;

@@ -43,6 +43,10 @@ struct RunOptions {
   // particles it draws, Simulation::gatheredParticles()) are made by all ranks, and its files
   // written by rank 0 (Communicator::isRoot()), as the run's own are.
   std::shared_ptr<const Communicator> ranks;
+  // Asked after every step: true stops the run there (a signal, docs/robustness.md), with a
+  // last snapshot and summary.json of status "interrupted". Every rank asks; any rank's true
+  // stops them all.
+  std::function<bool()> interrupted;
 };
 
 struct RunOutcome {
@@ -51,6 +55,7 @@ struct RunOutcome {
   LedgerSummary ledger;
   std::vector<GaugeSummary> gauges;
   bool ok = true;
+  bool interrupted = false;            // stopped by RunOptions::interrupted (ok stays true)
   std::string error;                   // the failure, when !ok
 };
 

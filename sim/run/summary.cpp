@@ -35,6 +35,15 @@ const T& extraAs(const RunSummary& s, const std::string& key, const char* type) 
   return std::get<T>(*v);
 }
 
+const char* statusName(RunSummary::Status status) {
+  switch (status) {
+    case RunSummary::Status::Completed: return "completed";
+    case RunSummary::Status::Failed: return "failed";
+    case RunSummary::Status::Interrupted: return "interrupted";
+  }
+  return "failed";
+}
+
 }  // namespace
 
 bool RunSummary::has(const std::string& key) const { return findExtra(*this, key) != nullptr; }
@@ -53,7 +62,7 @@ void writeSummaryJson(const std::string& path, const RunSummary& s) {
   Json doc;
   doc["ejecta_version"] = std::string(kEjectaVersion);
   doc["scene"] = s.scene;
-  doc["status"] = s.status == RunSummary::Status::Completed ? "completed" : "failed";
+  doc["status"] = statusName(s.status);
   doc["message"] = s.message;
   doc["particles"] = s.particles;
   doc["steps"] = s.steps;

@@ -34,8 +34,10 @@ struct RunSummary {
     std::array<double, 3> final{};
   } momentum;
 
-  enum class Status { Completed, Failed };
-  Status status = Status::Completed;  // written as "completed" / "failed"
+  // Interrupted: stopped by SIGINT/SIGTERM after a step, its state in a last snapshot (resume
+  // with `ejecta run --restart`).
+  enum class Status { Completed, Failed, Interrupted };
+  Status status = Status::Completed;  // written as "completed" / "failed" / "interrupted"
   std::string message;                // why it failed, or any remark
 
   // Free-form additions, written in order under "extras" (a later duplicate key wins).

@@ -4,6 +4,7 @@
 // "FILE:LINE: key 'a.b': reason".
 #include "sim/setup/scene.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -24,7 +25,7 @@ Scene validate(const toml::table& doc, const std::string& sourceName) {
   readDomain(root, scene);
   readSph(root, scene.sph);
   readTime(root, scene.time);
-  readOutput(root, scene.output);
+  readOutput(root, scene.output, scene.time.tEnd);
   readMaterials(root, scene);
   readBodies(root, scene);
   readDeposits(root, scene);
@@ -53,6 +54,8 @@ Scene parseScene(const std::string& tomlText, const std::string& sourceName,
 }
 
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw SceneError(path + ": is a directory, not a scene file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path + ": cannot open the scene file");
   std::ostringstream text;

@@ -97,7 +97,12 @@ void readSph(const TableReader& root, SphOptions& sph) {
                                                   {"constant", SmoothingLengthMethod::Constant}})
                             .value_or(sph.smoothingLength);
   sph.eta = r.optQuantity("eta", one).value_or(sph.eta);
-  r.check(sph.eta > 0.0, "eta", positiveMessage(sph.eta, one));
+  // h = eta x spacing. Price (2012, J. Comput. Phys. 231, 759) recommends 1.2 for the cubic
+  // spline; the wider Wendland kernels take up to ~2 (the shipped scenes use 1.2-2.0). Beyond
+  // 0.5-3 the neighbour count (~ (2 eta)^d) is below a stencil or in the thousands: a typo.
+  r.check(sph.eta >= 0.5 && sph.eta <= 3.0, "eta",
+          "is " + formatQuantity(sph.eta, one) + "; must be between 0.5 and 3 (h = eta x spacing; "
+          "1.2-2 is the kernels' range)");
   sph.relaxation = r.optQuantity("relaxation", one).value_or(sph.relaxation);
   r.check(sph.relaxation > 0.0 && sph.relaxation <= 1.0, "relaxation", "must be in (0, 1]");
   sph.courant = r.optQuantity("courant", one).value_or(sph.courant);
@@ -179,13 +184,24 @@ void readTime(const TableReader& root, TimeOptions& time) {
   }
 }
 
-void readOutput(const TableReader& root, OutputOptions& out) {
+// The most snapshots a run may ask for: 100,000 (at 1e6 particles, ~100 MB each, 10 TB).
+constexpr double kMaxSnapshots = 1e5;
+
+void readOutput(const TableReader& root, OutputOptions& out, double tEnd) {
   const toml::table* t = root.optTable("output");
   if (!t) return;
   const TableReader r(root.context(), *t, "output", "output");
   out.snapshotInterval = r.optQuantity("snapshot_interval").value_or(0.0);
   r.check(out.snapshotInterval >= 0.0, "snapshot_interval",
           nonNegativeMessage(out.snapshotInterval, Dimension::Time) + "; 0 = first and last only");
+  // Every step is cut to end on an output time: an interval far below the run's length would
+  // write a snapshot per step (and steps of the interval's size) without ever tripping dt_min.
+  if (out.snapshotInterval > 0.0)
+    r.check(tEnd / out.snapshotInterval <= kMaxSnapshots, "snapshot_interval",
+            "is " + formatQuantity(out.snapshotInterval, Dimension::Time) + ", which makes " +
+                formatQuantity(tEnd / out.snapshotInterval, Dimension::None) + " snapshots to t_end = " +
+                formatQuantity(tEnd, Dimension::Time) + "; at most 100000 (an interval of at least " +
+                formatQuantity(tEnd / kMaxSnapshots, Dimension::Time) + ")");
   out.snapshots = r.optBool("snapshots").value_or(out.snapshots);
 }
 

@@ -71,7 +71,7 @@ std::vector<SceneTable> runTables() {
                "density by kernel summation or by the continuity equation"),
         choice("smoothing_length", {"neighbours", "seed", "constant"}, "\"neighbours\"",
                "`\"neighbours\"`: h = η (m/ρ)^(1/d); `\"seed\"`: relaxed update; `\"constant\"`"),
-        number("eta", "1.2", "η > 0; also sets the initial h = η·(cell volume)^(1/d)"),
+        number("eta", "1.2", "η in [0.5, 3]; also sets the initial h = η·(cell volume)^(1/d)"),
         number("relaxation", "1.0", "θ of the seed's h update, in (0, 1]"),
         number("courant", "0.3", "Courant factor, in (0, 1]"),
         number("force_factor", "0.25", "dt ≤ force_factor·√(h/|a|), > 0"),
@@ -132,7 +132,7 @@ std::vector<SceneTable> runTables() {
       {"output",
        "`[output]`",
        "",
-       {quantity("snapshot_interval", s, "0", "time between snapshots; 0 = first and last only"),
+       {quantity("snapshot_interval", s, "0", "time between snapshots, at least t_end / 100000; 0 = first and last only"),
         boolean("snapshots", "true", "write snapshots at all")}},
   };
 }

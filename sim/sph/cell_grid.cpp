@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace ejecta {
 
@@ -11,6 +13,20 @@ long CellGrid::cellCoord(double x, int d) const {
   return std::clamp(c, 0L, cells_[d] - 1);
 }
 
+namespace {
+
+std::string nonFinitePosition(const ParticleSet& p, int d) {
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (!std::isfinite(p.x[d][i]))
+      return "neighbour search: particle " + std::to_string(i) +
+             (i < p.id.size() ? " (id " + std::to_string(p.id[i]) + ")" : std::string()) +
+             " has position component " + std::to_string(d) + " = " + std::to_string(p.x[d][i]) +
+             " (not finite)";
+  return "neighbour search: the particles span an infinite extent along axis " + std::to_string(d);
+}
+
+}  // namespace
+
 void CellGrid::build(const ParticleSet& p, int dim, double cellSize) {
   dim_ = dim;
   const std::size_t n = p.size();
@@ -18,12 +34,20 @@ void CellGrid::build(const ParticleSet& p, int dim, double cellSize) {
   for (int d = 0; d < dim; ++d) {
     lo[d] = std::numeric_limits<double>::max();
     hi[d] = std::numeric_limits<double>::lowest();
+    bool finite = true;
     for (std::size_t i = 0; i < n; ++i) {
       lo[d] = std::min(lo[d], p.x[d][i]);
       hi[d] = std::max(hi[d], p.x[d][i]);
+      finite &= std::isfinite(p.x[d][i]);
     }
     if (n == 0) lo[d] = hi[d] = 0.0;
+    // A NaN or infinite position has no cell (and an infinite extent no cell size that bounds
+    // the count): refuse rather than loop.
+    if (!finite || !std::isfinite(hi[d] - lo[d])) throw std::runtime_error(nonFinitePosition(p, d));
   }
+  if (n > 0 && (!(cellSize >= 0.0) || !std::isfinite(cellSize)))
+    throw std::runtime_error("neighbour search: the cell size is " + std::to_string(cellSize) +
+                             " (smoothing lengths not finite and positive)");
   // Bound the cell count (a sparse cloud with one small-h cluster must not allocate a huge grid).
   const double maxCells = 4.0 * static_cast<double>(std::max<std::size_t>(n, 64));
   cellSize_ = std::max(cellSize, 1e-300);

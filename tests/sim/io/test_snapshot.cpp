@@ -74,8 +74,18 @@ double awkwardDouble(std::mt19937_64& rng) {
   return std::bit_cast<double>(bits);
 }
 
-void fill(std::vector<double>& values, std::mt19937_64& rng) {
-  for (double& v : values) v = awkwardDouble(rng);
+// What a snapshot may hold (sim/io/snapshot_checks.hpp): no NaN, finite science arrays,
+// positive mass, density and h, lengths within 1e12 m. The awkward values are kept inside that.
+enum class Stored { Any, Positive, Length, PositiveLength };
+
+void fill(std::vector<double>& values, std::mt19937_64& rng, Stored kind = Stored::Any) {
+  for (double& v : values) {
+    v = awkwardDouble(rng);
+    if (std::isnan(v)) v = 0.1;
+    if (std::isinf(v)) v = std::copysign(1.7976931348623157e308, v);
+    if (kind == Stored::Positive || kind == Stored::PositiveLength) v = v == 0.0 ? 4.9406564584124654e-324 : std::abs(v);
+    if ((kind == Stored::Length || kind == Stored::PositiveLength) && std::abs(v) > 1e12) v = std::copysign(0.75e12, v);
+  }
 }
 
 // n real particles (with `ghosts` ghost entries after them) full of awkward values. Position
@@ -86,15 +96,17 @@ ParticleSet randomParticles(std::size_t n, std::size_t ghosts, Geometry geometry
   ParticleSet p;
   p.resize(n + ghosts);
   for (int d = 0; d < 3; ++d) {
-    fill(p.x[d], rng);
+    fill(p.x[d], rng, Stored::Length);
     if (d >= spatialDimension(geometry)) std::fill(p.x[d].begin(), p.x[d].end(), 0.0);
     fill(p.v[d], rng);
     fill(p.a[d], rng);
   }
   for (auto* array : {&p.mass, &p.rho, &p.u, &p.h, &p.P, &p.cs, &p.du_dt, &p.drho_dt, &p.dh_dt,
                       &p.omega, &p.divv, &p.curlv, &p.areaDensity})
-    fill(*array, rng);
-  for (auto& m : p.material) m = static_cast<int>(rng());
+    fill(*array, rng, array == &p.h ? Stored::PositiveLength
+                      : array == &p.mass || array == &p.rho ? Stored::Positive
+                                                           : Stored::Any);
+  for (auto& m : p.material) m = static_cast<int>(rng() >> 33);  // non-negative
   for (auto& id : p.id) id = static_cast<std::int64_t>(rng());
   p.numReal = n;
   p.ghostSource.assign(ghosts, 0);

@@ -244,7 +244,7 @@ TEST(Scene, BadValuesNameFileLineAndKey) {
       {6, "z = { min = 0, max = 1 }", 6, "domain.z", "axis not used in a 2d scene"},
       {8, "kernel = \"gaussian\"", 8, "sph.kernel",
        "allowed: 'cubic_spline', 'wendland_c2', 'wendland_c4'"},
-      {9, "eta = -1", 9, "sph.eta", "must be positive (got -1)"},
+      {9, "eta = -1", 9, "sph.eta", "is -1; must be between 0.5 and 3"},
       {11, "alpha = \"1 m\"", 11, "sph.viscosity.alpha",
        "expected a plain number, got a length (m)"},
       {11, "alfa = 1", 11, "sph.viscosity.alfa", "allowed keys here: alpha, beta, epsilon"},
