@@ -10,6 +10,8 @@ packages=(
   libopenmpi-dev openmpi-bin
   python3-matplotlib python3-numpy
 )
+# `install-deps.sh fuzz`: clang and its sanitizer and libFuzzer runtimes as well (make fuzz).
+if [ "${1:-}" = "fuzz" ]; then packages+=(clang libclang-rt-14-dev); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
