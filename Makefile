@@ -5,7 +5,7 @@ BUILD ?= build
 JOBS  ?= $(shell nproc)
 CTEST_ARGS ?= -LE slow
 
-.PHONY: all deps configure build demo test verification bench sanitize fuzz clean
+.PHONY: all deps configure build demo test verification bench sanitize fuzz fuzz-ci fuzz-build clean
 
 all: build
 
@@ -21,8 +21,11 @@ build: configure
 demo: build
 	$(BUILD)/apps/ejecta run --overwrite --out runs/demo
 
+# The suite, then the readers' fuzzers (a clang build of the libraries they need, ~5 minutes on
+# 2 cores, and ~1 minute of fuzzing: docs/robustness.md).
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+	@$(MAKE) --no-print-directory fuzz-ci
 
 verification: build
 	cd $(BUILD) && ctest --output-on-failure -L verification
@@ -31,7 +34,7 @@ verification: build
 # time steps), particles to grids and VDB files (3D and
 # RZ revolved), the impact scene's solid-mechanics overhead, ray-cast view factors, the thermal
 # chain with and without the asteroid as occluder, the wall solvers, and off-screen rendering;
-# throughput per core at 1 and 2 threads where it scales.
+# throughput per core at 1 and 2 threads where it scales; what the snapshots' checksums cost.
 bench: build
 	$(BUILD)/bench/ejecta_bench_sedov --n 40
 	$(BUILD)/bench/ejecta_bench_time_steps --problem sedov_2d --set "bodies[0].spacing=0.01" --set "energy_deposits[0].width=0.02"
@@ -42,6 +45,7 @@ bench: build
 	$(BUILD)/bench/ejecta_bench_thermal
 	$(BUILD)/bench/ejecta_bench_wall_heat --threads-sweep
 	$(BUILD)/bench/ejecta_bench_render --threads-sweep
+	$(BUILD)/bench/ejecta_bench_snapshot_io --particles 1000000 --repeats 3
 
 # Checked builds (docs/robustness.md), each in a folder of its own:
 #   make sanitize  the unit tests built with AddressSanitizer + UndefinedBehaviorSanitizer (gcc);
@@ -49,7 +53,7 @@ bench: build
 #                  are reported as leaks), as are the hostile corpus' process-spawning cases.
 #   make fuzz      the scene and snapshot readers' libFuzzer targets (clang, with the same
 #                  sanitizers), FUZZ_SECONDS each from the committed corpus; new inputs go to a
-#                  scratch folder, failures to $(FUZZ_BUILD)/findings/.
+#                  scratch folder, failures to $(FUZZ_BUILD)/findings/ (cmake/run-fuzzers.sh).
 SANITIZE_BUILD ?= build-sanitize
 FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 60
@@ -63,19 +67,18 @@ sanitize: deps
 	@cmake --build $(SANITIZE_BUILD) -j $(JOBS)
 	cd $(SANITIZE_BUILD) && $(SANITIZE_ENV) ctest --output-on-failure -j $(JOBS) -L unit -LE "mpi|hostile"
 
-fuzz:
+fuzz: fuzz-build
+	@bash cmake/run-fuzzers.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
+
+# What `make test` runs after the suite: the fuzzers with a fixed seed and input count.
+fuzz-ci: fuzz-build
+	@bash cmake/run-fuzzers.sh $(FUZZ_BUILD) ci
+
+fuzz-build:
 	@bash cmake/install-deps.sh fuzz
 	@CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Release -DEJECTA_FUZZ=ON \
 	  > $(FUZZ_BUILD).configure.log 2>&1 || (cat $(FUZZ_BUILD).configure.log; exit 1)
 	@cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzz_scene_reader fuzz_snapshot_reader
-	@for reader in scene_reader snapshot_reader; do \
-	  mkdir -p $(FUZZ_BUILD)/scratch/$$reader $(FUZZ_BUILD)/findings && \
-	  echo "fuzzing the $$reader for $(FUZZ_SECONDS) s" && \
-	  $(SANITIZE_ENV) $(FUZZ_BUILD)/tests/fuzz/fuzz_$$reader -max_total_time=$(FUZZ_SECONDS) \
-	    -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=1024 -print_final_stats=1 \
-	    -artifact_prefix=$(FUZZ_BUILD)/findings/$$reader- \
-	    $(FUZZ_BUILD)/scratch/$$reader tests/fuzz/corpus/$$reader || exit 1; \
-	done
 
 clean:
 	rm -rf $(BUILD) $(BUILD).configure.log $(SANITIZE_BUILD) $(SANITIZE_BUILD).configure.log \
