@@ -21,7 +21,7 @@ build: configure
 demo: build
 	$(BUILD)/apps/ejecta run --overwrite --out runs/demo
 
-# The suite, then the readers' fuzzers (a clang build of the libraries they need, ~5 minutes on
+# The suite, then the readers' fuzzers (a clang build of the libraries they need, ~3 minutes on
 # 2 cores, and ~1 minute of fuzzing: docs/robustness.md).
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
