@@ -5,7 +5,7 @@ BUILD ?= build
 JOBS  ?= $(shell nproc)
 CTEST_ARGS ?= -LE slow
 
-.PHONY: all deps configure build demo test verification bench sanitize fuzz fuzz-ci fuzz-build clean
+.PHONY: all deps configure build demo test verification bench sanitize fuzz fuzz-ci fuzz-build paraview-deps clean
 
 all: build
 
@@ -26,6 +26,13 @@ demo: build
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
 	@$(MAKE) --no-print-directory fuzz-ci
+
+# ParaView (pvbatch, its Python modules) and a virtual X server: with them installed, the next
+# configure registers the test that opens a run's series in ParaView itself (label paraview),
+# and `make test` runs it. Large (~440 MB), so not part of `deps`.
+paraview-deps:
+	@bash cmake/install-deps.sh paraview
+	@cmake -S . -B $(BUILD) > $(BUILD).configure.log 2>&1 || (cat $(BUILD).configure.log; exit 1)
 
 verification: build
 	cd $(BUILD) && ctest --output-on-failure -L verification

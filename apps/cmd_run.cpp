@@ -1,12 +1,11 @@
 // `ejecta run`: load a scene (or the embedded default), run it, write outputs, print a summary.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <optional>
-#include <sstream>
 
 #include "apps/commands.hpp"
 #include "apps/interrupt.hpp"
@@ -20,6 +19,7 @@
 #include "sim/run/run_directory.hpp"
 #include "sim/setup/memory_estimate.hpp"
 #include "sim/setup/scene.hpp"
+#include "sim/setup/scene_catalog.hpp"
 
 namespace fs = std::filesystem;
 
@@ -28,18 +28,6 @@ namespace ejecta::app {
 using namespace ejecta::coupling;  // the in-situ chain (coupling/)
 
 namespace {
-
-std::string readText(const std::string& path) {
-  std::error_code ec;
-  if (fs::is_directory(path, ec))
-    throw SceneError(path + ": is a directory, not a scene file (to resume the run in it: "
-                     "ejecta run --restart " + path + ")");
-  std::ifstream in(path);
-  if (!in) throw SceneError(path + ": cannot open scene file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // The source's yield and where it sat, and the target's share (sim/run/energy_ledger.hpp).
 void printSource(const LedgerSummary::Source& source) {
@@ -89,9 +77,10 @@ struct HookResults {
 
 void printSummary(const RunOutcome& r, const HookResults& hooks, const std::string& outDir) {
   const RunSummary& s = r.summary;
-  std::printf("ejecta: %s %s: %zu particles, %ld steps to t = %.6g s in %.2f s wall (%d threads)\n",
+  std::printf("ejecta: %s %s: %zu particles, %ld steps to t = %.6g s in %.2f s wall (%.2f s with "
+              "set-up and outputs; %d threads)\n",
               s.scene.c_str(), !r.ok ? "FAILED" : r.interrupted ? "INTERRUPTED" : "completed", s.particles, s.steps, s.tEnd,
-              s.wallSeconds, s.threads);
+              s.wallSeconds, s.totalWallSeconds, s.threads);
   if (std::isfinite(s.energy.relativeError))
     std::printf("  energy: initial %.8g J, final %.8g J, relative error %.3g\n", s.energy.initial,
                 s.energy.final, s.energy.relativeError);
@@ -178,8 +167,12 @@ void addInSituOutputs(const Scene& scene, RunOptions& options, bool charts) {
 
 int runCommand(const RunArgs& args) {
   RunOptions options;
+  options.started = std::chrono::steady_clock::now();
   options.threads = args.threads;
+  // A terminal gets the live line; a log (a batch job, a pipe, CI) a plain line every
+  // --progress-every seconds (default 60).
   options.progress = !args.quiet && interactive();
+  if (!args.quiet && !options.progress) options.progressInterval = args.progressEvery;
   // Under mpirun: every rank of MPI_COMM_WORLD (one rank otherwise); rank 0 prints.
   options.ranks = worldCommunicator();
   const bool root = options.ranks->isRoot();
@@ -192,9 +185,10 @@ int runCommand(const RunArgs& args) {
     addThermalOutputs(o, scene, charts, [hooks](const ThermalSummary& t) { hooks->thermal = t; });
   };
   if (!args.restartDir.empty()) {
-    if (!args.scene.empty() || !args.overrides.empty())
-      throw std::runtime_error("--restart takes the scene and overrides stored in the run; "
-                               "do not give a SCENE or --set with it");
+    if (!args.scene.empty())
+      throw std::runtime_error("--restart takes the scene stored in the run; do not give a SCENE "
+                               "with it (--set time.t_end=... extends the run)");
+    options.restartOverrides = args.overrides;
     const RunOutcome r = restartRun(args.restartDir, options);
     if (root) printSummary(r, *hooks, args.restartDir);
     return exitStatus(r);
@@ -204,8 +198,9 @@ int runCommand(const RunArgs& args) {
     source = std::string(findEmbeddedScene("default"));
     path = "<default scene>";
   } else {
-    path = args.scene;
-    source = readText(path);
+    SceneText scene = readSceneArgument(args.scene);
+    source = std::move(scene.text);
+    path = std::move(scene.label);
   }
   const Scene scene = parseScene(source, path, args.overrides);
   options.outDir = args.outDir.empty() ? (fs::path("runs") / scene.name).string() : args.outDir;

@@ -28,6 +28,7 @@
 #include "sim/run/run.hpp"
 #include "sim/run/sweep.hpp"
 #include "sim/setup/scene.hpp"
+#include "sim/setup/scene_catalog.hpp"
 
 extern char** environ;
 
@@ -125,22 +126,20 @@ std::vector<int> runVariantsOnRanks(const Communicator& world, const SweepArgs& 
   const int groups = std::min(world.size(), static_cast<int>(variants.size()));
   const int group = world.rank() * groups / world.size();
   const std::shared_ptr<const Communicator> ranks = world.split(group);
-  std::ifstream in(args.scene);
-  std::ostringstream text;
-  text << in.rdbuf();
+  const SceneText scene = readSceneArgument(args.scene);
   std::vector<int> status(variants.size(), 0);
   for (std::size_t k = static_cast<std::size_t>(group); k < variants.size(); k += static_cast<std::size_t>(groups)) {
     std::vector<std::string> all = args.overrides;
     all.insert(all.end(), variants[k].begin(), variants[k].end());
     RunOptions options;
     options.outDir = dirOf(k).string();
-    options.sceneSource = text.str();
+    options.sceneSource = scene.text;
     options.overrides = all;
     options.ranks = ranks;
-    options.configure = [](const Scene& scene, RunOptions& o) { addInSituOutputs(scene, o, true); };
+    options.configure = [](const Scene& s, RunOptions& o) { addInSituOutputs(s, o, true); };
     std::string outcome;
     try {
-      const RunOutcome r = runScene(loadScene(args.scene, all), options);
+      const RunOutcome r = runScene(parseScene(scene.text, scene.label, all), options);
       status[k] = r.ok ? 0 : 2;
       outcome = r.ok ? "completed" : "failed: " + r.error;
     } catch (const SceneError& e) {  // a bad scene: raised alike on every rank of the group
@@ -212,11 +211,12 @@ int sweepCommand(const SweepArgs& args) {
   for (const std::string& v : args.vary) axes.push_back(parseSweepAxis(v));
   const std::vector<std::vector<std::string>> variants = sweepVariants(axes);
   // Validate every variant before running any: a bad value fails now, naming the key.
+  const SceneText scene = readSceneArgument(args.scene);
   std::string name;
   for (const auto& overrides : variants) {
     std::vector<std::string> all = args.overrides;
     all.insert(all.end(), overrides.begin(), overrides.end());
-    name = loadScene(args.scene, all).name;
+    name = parseScene(scene.text, scene.label, all).name;
   }
   const fs::path out = args.outDir.empty() ? fs::path("runs") / (name + "_sweep") : fs::path(args.outDir);
   const std::shared_ptr<const Communicator> world = worldCommunicator();

@@ -1,6 +1,7 @@
 #pragma once
 // The ejecta subcommands, each a thin shell over the libraries. main.cpp parses the command line
-// (CLI11 lives in that one translation unit) and calls these.
+// (CLI11 lives there and in cli_reference.cpp, which writes the manual page and the completion
+// from the same definition) and calls these.
 #include <string>
 #include <vector>
 
@@ -24,6 +25,8 @@ struct RunArgs {
   bool quiet = false;
   bool charts = true;                 // --no-charts: CSVs only (no matplotlib start-ups)
   bool overwrite = false;             // --overwrite: replace an earlier run in outDir
+  double progressEvery = 60.0;        // --progress-every: seconds between the plain progress
+                                      // lines when stderr is not a terminal
 };
 int runCommand(const RunArgs& args);
 
@@ -134,6 +137,12 @@ struct KeysArgs {
   std::string write;                   // rewrite the reference between this file's markers
 };
 int keysCommand(const KeysArgs& args);
+
+struct ScenesArgs {
+  std::string show;                    // `ejecta scenes show NAME`: print that file
+  std::string kind;                    // --kind scene|geometry|study: list only these
+};
+int scenesCommand(const ScenesArgs& args);
 
 // True when stderr is a terminal and CI is not set: show progress lines.
 bool interactive();

@@ -9,8 +9,10 @@
 #include <string>
 #include <thread>
 
+#include "apps/cli_reference.hpp"
 #include "apps/commands.hpp"
 #include "apps/launch_check.hpp"
+#include "sim/io/snapshot.hpp"  // kEjectaVersion
 #include "sim/parallel/communicator.hpp"
 
 namespace {
@@ -55,11 +57,12 @@ int main(int argc, char** argv) {
   CLI::App app{"ejecta: SPH hydrocode for impacts and explosions on asteroids"};
   app.footer(kExitCodes);
   app.require_subcommand(1);
-  app.set_version_flag("--version", "ejecta 0.1.0");
+  const std::string version = "ejecta " + std::string(ejecta::kEjectaVersion);
+  app.set_version_flag("--version", version);
 
   ejecta::app::RunArgs run;
   CLI::App* runCmd = app.add_subcommand("run", "Run a scene (no SCENE: the embedded default scene)");
-  runCmd->add_option("scene", run.scene, "Scene file (TOML)");
+  runCmd->add_option("scene", run.scene, "Scene file (TOML), or a shipped scene's name (ejecta scenes)");
   runCmd->add_option("--out,-o", run.outDir, "Output directory (default runs/<scene name>)");
   runCmd->add_option("--set", run.overrides, "Override a scene key: --set sph.kernel=wendland_c2")
       ->take_all();
@@ -67,7 +70,11 @@ int main(int argc, char** argv) {
       ->check(countPerCore("--threads"));
   runCmd->add_flag("--overwrite", run.overwrite,
                    "Replace an earlier run in the output directory (its outputs are removed)");
-  runCmd->add_option("--restart", run.restartDir, "Resume the run in RUN_DIR from its last snapshot");
+  runCmd->add_option("--restart", run.restartDir,
+                     "Resume the run in RUN_DIR from its last snapshot (with --set time.t_end=...: extend it)");
+  runCmd->add_option("--progress-every", run.progressEvery,
+                     "When stderr is not a terminal (a batch job's log): a progress line every this many seconds (default 60)")
+      ->check(CLI::Range(0.001, 1e6).description("0.001 to 1e6 s"));
   runCmd->add_flag("--quiet,-q", run.quiet, "No progress line");
   runCmd->add_flag("!--no-charts", run.charts, "Write the CSVs but draw no charts");
 
@@ -101,7 +108,7 @@ int main(int argc, char** argv) {
 
   ejecta::app::SweepArgs sweepArgs;
   CLI::App* sweepCmd = app.add_subcommand("sweep", "Run variants of a scene and tabulate what each coupled into the target");
-  sweepCmd->add_option("scene", sweepArgs.scene, "Scene file (TOML)")->required();
+  sweepCmd->add_option("scene", sweepArgs.scene, "Scene file (TOML), or a shipped scene's name")->required();
   sweepCmd->add_option("--vary", sweepArgs.vary,
                        "key=v1,v2,...: values of one key; several --vary change together")
       ->required()->take_all();
@@ -176,6 +183,22 @@ int main(int argc, char** argv) {
   keysCmd->add_flag("--markdown", keysArgs.markdown, "The key reference of docs/scenes.md (Markdown)");
   keysCmd->add_option("--write", keysArgs.write, "Replace the reference between the markers of this file (docs/scenes.md)");
 
+  ejecta::app::ScenesArgs scenesArgs;
+  CLI::App* scenesCmd = app.add_subcommand("scenes", "List the shipped scenes (run one by name: ejecta run impact_rz)");
+  scenesCmd->add_option("--kind", scenesArgs.kind, "Only this kind: scene (ejecta run), geometry (ejecta viewfactor), study (ejecta thermal, ejecta whipple)");
+  CLI::App* scenesShowCmd = scenesCmd->add_subcommand("show", "Print a shipped scene, to run as it is or to copy as a template");
+  scenesShowCmd->add_option("name", scenesArgs.show, "Scene name, e.g. impact_rz or verification/sod_1d")->required();
+
+  // The manual page and the bash completion, from the definitions above (apps/cli_reference.hpp).
+  if (argc == 2 && std::string(argv[1]) == "--man") {
+    std::fputs(ejecta::app::manPage(app, version).c_str(), stdout);
+    return 0;
+  }
+  if (argc == 2 && std::string(argv[1]) == "--bash-completion") {
+    std::fputs(ejecta::app::bashCompletion(app).c_str(), stdout);
+    return 0;
+  }
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -212,6 +235,7 @@ int main(int argc, char** argv) {
     if (*whippleCmd) return ejecta::app::whippleCommand(whippleArgs);
     if (*undexCmd) return ejecta::app::undexReferenceCommand(undexArgs);
     if (*keysCmd) return ejecta::app::keysCommand(keysArgs);
+    if (*scenesCmd) return ejecta::app::scenesCommand(scenesArgs);
   } catch (const std::exception& e) {
     // Every error names the file it is about: the readers name theirs; an error from deeper
     // down (a solver refusing a patch, an allocator) gets the command's input in front.
@@ -226,6 +250,7 @@ int main(int argc, char** argv) {
                               : *renderCmd  ? renderArgs.input
                               : *whippleCmd ? whippleArgs.shield
                               : *undexCmd   ? undexArgs.scene
+                              : *scenesCmd  ? scenesArgs.show
                                             : std::string();
     const bool named = input.empty() || message.find(*thermalCmd ? thermalArgs.scene : input) != std::string::npos ||
                        (*thermalCmd && !thermalArgs.from.empty() && message.find(thermalArgs.from) != std::string::npos);

@@ -9,9 +9,13 @@ packages=(
   libembree-dev libosmesa6-dev libpng-dev hdf5-tools
   libopenmpi-dev openmpi-bin
   python3-matplotlib python3-numpy
+  python3-h5py python3-openvdb python3-pytest python3-venv python3-pip python3-setuptools
 )
 # `install-deps.sh fuzz`: clang and its sanitizer and libFuzzer runtimes as well (make fuzz).
 if [ "${1:-}" = "fuzz" ]; then packages+=(clang libclang-rt-14-dev); fi
+# `install-deps.sh paraview`: ParaView's pvbatch and Python modules with a virtual X server, for
+# the test that opens a run's series in ParaView itself (make paraview-deps; ~440 MB).
+if [ "${1:-}" = "paraview" ]; then packages+=(paraview python3-paraview xvfb xauth); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -259,6 +259,28 @@ inline void writeStringDataset(hid_t group, const char* name, const std::string&
   writeStringAttribute(dset.get(), "description", description);
 }
 
+// A 1-D dataset of fixed-length UTF-8 strings, each padded to the longest (h5py reads it as an
+// array of bytes; `.astype(str)` gives text).
+inline void writeStringArray(hid_t group, const char* name, const std::vector<std::string>& texts,
+                             const char* description) {
+  std::size_t longest = 0;
+  for (const std::string& t : texts) longest = std::max(longest, t.size());
+  const Hid type = stringType(std::string(longest, ' '));
+  const std::size_t width = longest + 1;
+  std::vector<char> buffer(std::max<std::size_t>(1, texts.size() * width), '\0');
+  for (std::size_t i = 0; i < texts.size(); ++i) texts[i].copy(buffer.data() + i * width, texts[i].size());
+  const hsize_t count = texts.size();
+  const Hid space = checked(H5Screate_simple(1, &count, nullptr), H5Sclose, "cannot create dataspace");
+  const Hid dset = checked(H5Dcreate2(group, name, type.get(), space.get(), H5P_DEFAULT,
+                                      H5P_DEFAULT, H5P_DEFAULT),
+                           H5Dclose, std::string("cannot create dataset '") + name + "'");
+  if (count > 0)
+    check(H5Dwrite(dset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()),
+          std::string("cannot write dataset '") + name + "'");
+  writeStringAttribute(dset.get(), "units", "1");
+  writeStringAttribute(dset.get(), "description", description);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Reading
 // ---------------------------------------------------------------------------------------------
@@ -480,5 +502,49 @@ inline std::string readStringDataset(hid_t file, const std::string& path) {
   });
 }
 
+// A 1-D string dataset (fixed length as writeStringArray writes it, or variable length as h5py
+// may) of at most `most` entries of at most 4 kB each.
+inline std::vector<std::string> readStringArray(hid_t file, const std::string& path, std::size_t most) {
+  const Hid dset = openDataset(file, path);
+  const std::string label = "dataset '" + path + "'";
+  const std::vector<hsize_t> dims = datasetShape(dset.get(), path);
+  if (dims.size() != 1 || dims[0] > most)
+    throw std::runtime_error(label + " has shape " + shapeText(dims) + ", expected at most (" +
+                             std::to_string(most) + ")");
+  const Hid type = checked(H5Dget_type(dset.get()), H5Tclose, "cannot get type of " + label);
+  if (H5Tget_class(type.get()) != H5T_STRING) throw std::runtime_error(label + " is not a string array");
+  const std::size_t n = dims[0];
+  std::vector<std::string> texts(n);
+  if (n == 0) return texts;
+  const Hid memType = checked(H5Tcopy(H5T_C_S1), H5Tclose, "cannot create string type");
+  const H5T_cset_t cset = H5Tget_cset(type.get());
+  if (cset < 0) failHdf5("cannot get character set of " + label);
+  check(H5Tset_cset(memType.get(), cset), "cannot set string encoding");
+  const htri_t variable = H5Tis_variable_str(type.get());
+  if (variable < 0) failHdf5("cannot inspect type of " + label);
+  if (variable > 0) {
+    check(H5Tset_size(memType.get(), H5T_VARIABLE), "cannot size string type");
+    std::vector<char*> pointers(n, nullptr);
+    check(H5Dread(dset.get(), memType.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()),
+          "cannot read " + label);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (pointers[i]) texts[i] = pointers[i];
+      H5free_memory(pointers[i]);
+    }
+    return texts;
+  }
+  const std::size_t width = H5Tget_size(type.get());
+  if (width == 0 || width > 4096) throw std::runtime_error(label + " has strings of " +
+                                                           std::to_string(width) + " bytes");
+  check(H5Tset_size(memType.get(), width), "cannot size string type");
+  std::vector<char> buffer(n * width, '\0');
+  check(H5Dread(dset.get(), memType.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()),
+        "cannot read " + label);
+  for (std::size_t i = 0; i < n; ++i) {
+    const char* start = buffer.data() + i * width;
+    texts[i].assign(start, std::find(start, start + width, '\0'));
+  }
+  return texts;
+}
 
 }  // namespace ejecta::hdf5

@@ -14,6 +14,7 @@
 #include "sim/io/snapshot_checks.hpp"
 #include "sim/io/snapshot_rows.hpp"
 #include "sim/state/builtin_fields.hpp"
+#include "sim/io/xdmf.hpp"
 
 namespace ejecta {
 
@@ -107,6 +108,66 @@ void writeRestart(hid_t file, const ParticleSet& p, const SnapshotInfo& info, co
                           info.initialMaterialInternal.size());
   }
   writeScalarAttribute(g, "wall_seconds", info.wallSeconds);
+}
+
+// /materials: one row per material id, as parallel string arrays (h5py and ParaView read them
+// without a compound type).
+void writeMaterials(hid_t file, const SnapshotInfo& info) {
+  if (info.materials.empty()) return;
+  const Hid group = createGroup(file, "/materials");
+  std::vector<int> ids;
+  std::vector<std::string> names, eos, strength, fracture;
+  for (std::size_t m = 0; m < info.materials.size(); ++m) {
+    ids.push_back(static_cast<int>(m));
+    names.push_back(info.materials[m].name);
+    eos.push_back(info.materials[m].eos);
+    strength.push_back(info.materials[m].strength);
+    fracture.push_back(info.materials[m].fracture);
+  }
+  writeScalarField(group.get(), {"id", "1", "material id: the value of /particles/material"}, ids,
+                   ids.size(), RowSlot{0, ids.size(), true});
+  writeStringArray(group.get(), "name", names, "material name, as the scene gives it");
+  writeStringArray(group.get(), "eos", eos, "equation of state (library entry)");
+  writeStringArray(group.get(), "strength", strength, "strength model, or none (a fluid)");
+  writeStringArray(group.get(), "fracture", fracture, "fracture model, or none");
+}
+
+// /xdmf/vertices = 0, 1, ..., N-1: the Polyvertex connectivity of the XDMF series (ParaView's
+// Xdmf3 readers make no cells without it, and a Points view then draws nothing). Written whole
+// when the file is created, so a distributed snapshot's ranks need not write it.
+void writeVertexIndex(hid_t file, std::size_t totalRows) {
+  const Hid group = createGroup(file, "/xdmf");
+  const DatasetSpec spec{"vertices", "1", "0 .. N-1: the Polyvertex connectivity snapshots.xdmf points to"};
+  const RowSlot slot{0, totalRows, true};
+  if (xdmfVertexPrecision(totalRows) == 4) {
+    std::vector<int> index(totalRows);
+    for (std::size_t i = 0; i < totalRows; ++i) index[i] = static_cast<int>(i);
+    writeScalarField(group.get(), spec, index, totalRows, slot);
+  } else {
+    std::vector<std::int64_t> index(totalRows);
+    for (std::size_t i = 0; i < totalRows; ++i) index[i] = static_cast<std::int64_t>(i);
+    writeScalarField(group.get(), spec, index, totalRows, slot);
+  }
+}
+
+// At most this many materials: far above any scene, low enough that a corrupt extent cannot
+// make the reader allocate much.
+constexpr std::size_t kMostMaterials = 1u << 12;
+
+void readMaterials(hid_t file, SnapshotInfo& info) {
+  info.materials.clear();
+  if (!linkExists(file, "/materials")) return;
+  const std::vector<std::string> names = readStringArray(file, "/materials/name", kMostMaterials);
+  const std::vector<std::string> eos = readStringArray(file, "/materials/eos", kMostMaterials);
+  const std::vector<std::string> strength = readStringArray(file, "/materials/strength", kMostMaterials);
+  const std::vector<std::string> fracture = readStringArray(file, "/materials/fracture", kMostMaterials);
+  if (eos.size() != names.size() || strength.size() != names.size() || fracture.size() != names.size())
+    throw std::runtime_error("group '/materials' has arrays of different lengths (" +
+                             std::to_string(names.size()) + " names, " + std::to_string(eos.size()) +
+                             " eos, " + std::to_string(strength.size()) + " strength, " +
+                             std::to_string(fracture.size()) + " fracture)");
+  for (std::size_t m = 0; m < names.size(); ++m)
+    info.materials.push_back({names[m], eos[m], strength[m], fracture[m]});
 }
 
 std::size_t particleCount(hid_t file) {
@@ -277,6 +338,8 @@ void createSnapshotFile(const std::filesystem::path& tempPath, const ParticleSet
   writeRootAttributes(file.get(), info);
   writeParticles(file.get(), p, info.geometry, slot);
   writeRestart(file.get(), p, info, slot);
+  writeMaterials(file.get(), info);
+  writeVertexIndex(file.get(), totalRows);
   check(file.close(), "cannot close temporary file '" + tempPath.string() + "'");
 }
 
@@ -325,6 +388,7 @@ auto readSnapshotFile(const std::string& path, Read&& read) {
     SnapshotInfo info;
     readRootAttributes(file.get(), info);
     readRestartAttributes(file.get(), info);
+    readMaterials(file.get(), info);
     checkSnapshotInfo(info);
     return read(file.get(), std::move(info));
   } catch (const std::exception& e) {

@@ -15,6 +15,16 @@ namespace ejecta {
 // Written as the root attribute `ejecta_version` (and into run summaries).
 inline constexpr std::string_view kEjectaVersion = "0.1.0";
 
+// One entry of the run's material table, as /materials stores it: what a particle's `material`
+// id means to a reader that does not have the scene (ParaView's legend, Python).
+struct SnapshotMaterial {
+  std::string name;      // the scene's [[materials]] name
+  std::string eos;       // equation of state, with its library entry: "tillotson (granite)"
+  std::string strength;  // strength model, or "none" (a fluid)
+  std::string fracture;  // fracture model, or "none"
+  bool operator==(const SnapshotMaterial&) const = default;
+};
+
 // Run-level state stored alongside the particles. Everything here is written; on reading every
 // field is restored exactly.
 struct SnapshotInfo {
@@ -33,6 +43,8 @@ struct SnapshotInfo {
   // empty in snapshots written before the ledger existed.
   std::vector<double> initialMaterialKinetic, initialMaterialInternal;
   double wallSeconds = 0.0;      // wall-clock time spent on the run so far [s]
+  // The material table by id (group /materials); empty in snapshots written before it existed.
+  std::vector<SnapshotMaterial> materials;
   // Full text of the scene file the run was started from, so a resumed run does not depend on
   // the file being unchanged on disk. May be empty. Stored as dataset /restart/scene_source.
   std::string sceneSource;

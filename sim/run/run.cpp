@@ -32,6 +32,26 @@ namespace ejecta {
 
 namespace {
 
+// The scene's material table as snapshots record it (sim/io/snapshot.hpp, SnapshotMaterial).
+std::vector<SnapshotMaterial> materialRecords(const Scene& scene) {
+  std::vector<SnapshotMaterial> records;
+  for (const MaterialSpec& m : scene.materials) {
+    const auto model = [](const ModelSpec& spec) {
+      if (!spec.present || spec.model.empty()) return std::string("none");
+      return spec.library.empty() ? spec.model : spec.model + " (" + spec.library + ")";
+    };
+    records.push_back({m.name, m.library.empty() ? m.eos : m.eos + " (" + m.library + ")",
+                       model(m.strength), model(m.fracture)});
+  }
+  return records;
+}
+
+std::vector<std::string> materialNames(const std::vector<SnapshotMaterial>& records) {
+  std::vector<std::string> names;
+  for (const SnapshotMaterial& m : records) names.push_back(m.name);
+  return names;
+}
+
 constexpr const char* kOverridePrefix = "# ejecta-override: ";
 // A delayed deposit the run has fired, with the ledger's state just before it: restart state
 // that travels in the stored scene text as a comment line, so a restart neither fires it again
@@ -194,12 +214,13 @@ class RunOutputs {
     gauges_.flush();
     const std::string name = snapshotName(info.snapshotIndex);
     info.sceneSource = sourceWithOverrides(options_, sim.depositFirings());
+    info.materials = materialRecords(sim.scene());
     const std::uint64_t total = sim.totalParticles();
     ejecta::writeSnapshot((fs::path(options_.outDir) / "snapshots" / name).string(), sim.particles(),
                           info, sim.ranks());
     if (!enabled()) return;
     xdmf_.push_back({"snapshots/" + name, info.time, total, info.geometry,
-                     xdmfAttributes(sim.particles())});
+                     xdmfAttributes(sim.particles()), materialNames(info.materials)});
     writeXdmfSeries((fs::path(options_.outDir) / "snapshots.xdmf").string(), xdmf_);
   }
   void setSeries(std::vector<XdmfEntry> entries) { xdmf_ = std::move(entries); }
@@ -225,28 +246,42 @@ class RunOutputs {
   std::vector<XdmfEntry> xdmf_;
 };
 
+// Progress on stderr: on a terminal one line rewritten in place twice a second; in a batch
+// job's log (RunOptions::progressInterval) a plain line every interval, so the log shows the
+// run advancing without a wall of carriage returns.
 class ProgressLine {
  public:
-  explicit ProgressLine(bool on) : on_(on) {}
+  ProgressLine(bool live, double interval) : live_(live), interval_(live ? 0.0 : interval) {}
   void update(const Simulation& sim, double wallSeconds, bool force = false) {
-    if (!on_) return;
-    if (!force && wallSeconds - last_ < 0.5) return;
-    last_ = wallSeconds;
-    const double tEnd = sim.scene().time.tEnd;
-    const double fraction = std::clamp(sim.time() / tEnd, 0.0, 1.0);
-    const double eta = fraction > 0 ? wallSeconds * (1 - fraction) / fraction : 0.0;
-    std::fprintf(stderr, "\r[ejecta] step %ld  t = %.4g s  dt = %.3g s  %5.1f%%  ETA %s    ",
-                 sim.stepCount(), sim.time(), sim.lastDt(), 100 * fraction,
-                 formatDuration(eta).c_str());
-    std::fflush(stderr);
+    if (live_) {
+      if (!force && wallSeconds - last_ < 0.5) return;
+      last_ = wallSeconds;
+      std::fprintf(stderr, "\r[ejecta] %s    ", describe(sim, wallSeconds).c_str());
+      std::fflush(stderr);
+    } else if (interval_ > 0 && !force && wallSeconds - last_ >= interval_) {
+      last_ = wallSeconds;
+      std::fprintf(stderr, "[ejecta] %s, %s wall\n", describe(sim, wallSeconds).c_str(),
+                   formatDuration(wallSeconds).c_str());
+      std::fflush(stderr);
+    }
   }
   void finish() {
-    if (on_) std::fprintf(stderr, "\n");
+    if (live_) std::fprintf(stderr, "\n");
   }
 
  private:
-  bool on_;
-  double last_ = -1.0;
+  static std::string describe(const Simulation& sim, double wallSeconds) {
+    const double tEnd = sim.scene().time.tEnd;
+    const double fraction = std::clamp(sim.time() / tEnd, 0.0, 1.0);
+    const double eta = fraction > 0 ? wallSeconds * (1 - fraction) / fraction : 0.0;
+    char line[160];
+    std::snprintf(line, sizeof line, "step %ld  t = %.4g s  dt = %.3g s  %5.1f%%  ETA %s",
+                  sim.stepCount(), sim.time(), sim.lastDt(), 100 * fraction, formatDuration(eta).c_str());
+    return line;
+  }
+  bool live_;
+  double interval_;
+  double last_ = 0.0;
 };
 
 }  // namespace
@@ -285,7 +320,7 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   const bool root = sim.ranks().isRoot();
-  ProgressLine progress(options.progress && root);
+  ProgressLine progress(options.progress && root, root ? options.progressInterval : 0.0);
   RunOutcome outcome;
   bool lastWritten = atSnapshot;
   double outputSeconds = 0.0;  // writing the snapshots, and the in-situ hooks
@@ -429,6 +464,8 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
   addToSummary(outcome.gauges, s);
   // On every rank, as onOutput (the summary is rank 0's).
   if (options.onFinish) options.onFinish(sim, s);
+  s.totalWallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                                     options.started.value_or(start)).count();
   if (outputs.enabled())
     writeSummaryJson((fs::path(options.outDir) / "summary.json").string(), s);
   return outcome;
@@ -449,6 +486,7 @@ RunOutcome runSimulation(Simulation& sim, const RunOptions& options) {
 
 RunOutcome runScene(const Scene& scene, const RunOptions& baseOptions) {
   RunOptions options = baseOptions;
+  if (!options.started) options.started = std::chrono::steady_clock::now();
   if (options.configure) options.configure(scene, options);
   requireRunMemory(scene, options.ranks ? options.ranks->size() : 1);
   const int threads = resolveThreads(options.threads);
@@ -462,6 +500,38 @@ RunOutcome runScene(const Scene& scene, const RunOptions& baseOptions) {
 
 namespace {
 
+// A restart's --set: one of restartChangeableKeys(), or a refusal naming the key and why.
+std::string keyOf(const std::string& change) {
+  std::string key = change.substr(0, change.find('='));
+  key.erase(0, key.find_first_not_of(" \t"));
+  key.erase(key.find_last_not_of(" \t") + 1);
+  return key;
+}
+
+void requireRestartChangeable(const std::string& change, const std::string& runDir) {
+  const std::string key = keyOf(change);
+  const auto& keys = restartChangeableKeys();
+  if (change.find('=') == std::string::npos)
+    throw SceneError("restart of " + runDir + ": --set '" + change + "' is not key=value");
+  if (std::find(keys.begin(), keys.end(), key) != keys.end()) return;
+  std::string list;
+  for (const std::string& k : keys) list += (list.empty() ? "" : ", ") + k;
+  throw SceneError("restart of " + runDir + ": key '" + key + "' cannot change at a restart (the "
+                   "run so far was made with the stored value; changing it midway would make the "
+                   "outputs of no one scene); a restart may change " + list +
+                   ". To run with another value, start a new run");
+}
+
+// The stored overrides that identify a run: those a restart may add are left out, so an
+// extended run's snapshots are of the same run as the ones before the extension.
+std::vector<std::string> identifyingOverrides(const std::vector<std::string>& overrides) {
+  std::vector<std::string> kept;
+  const auto& keys = restartChangeableKeys();
+  for (const std::string& o : overrides)
+    if (std::find(keys.begin(), keys.end(), keyOf(o)) == keys.end()) kept.push_back(o);
+  return kept;
+}
+
 // A restart resumes the run its last snapshot holds; every earlier snapshot in the directory
 // must be of that run (the same scene text and overrides; the delayed deposits fired differ).
 void requireSameRun(const SnapshotInfo& earlier, const fs::path& earlierPath, const SnapshotInfo& last,
@@ -470,7 +540,8 @@ void requireSameRun(const SnapshotInfo& earlier, const fs::path& earlierPath, co
   std::vector<std::string> aOverrides, bOverrides;
   splitStoredScene(earlier.sceneSource, a, aOverrides);
   splitStoredScene(last.sceneSource, b, bOverrides);
-  if (earlier.scene == last.scene && a == b && aOverrides == bOverrides && earlier.time <= last.time)
+  if (earlier.scene == last.scene && a == b &&
+      identifyingOverrides(aOverrides) == identifyingOverrides(bOverrides) && earlier.time <= last.time)
     return;
   throw std::runtime_error(
       "restart: " + earlierPath.string() + " is not of the run in " + lastPath.string() +
@@ -481,6 +552,11 @@ void requireSameRun(const SnapshotInfo& earlier, const fs::path& earlierPath, co
 }
 
 }  // namespace
+
+const std::vector<std::string>& restartChangeableKeys() {
+  static const std::vector<std::string> keys = {"time.t_end", "time.max_steps"};
+  return keys;
+}
 
 Scene storedScene(const SnapshotInfo& info, const std::string& snapshotPath) {
   if (info.sceneSource.empty())
@@ -524,12 +600,28 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
   const std::size_t storedParticles =
       parts > 1 ? static_cast<std::size_t>(baseOptions.ranks->sum(particles.numReal)) : particles.numReal;
   RunOptions options = baseOptions;
+  if (!options.started) options.started = std::chrono::steady_clock::now();
   options.outDir = runDir;
   // The scene as the run was started: its text and --set overrides travel in the snapshot.
   std::vector<DepositFiring> firings;
   splitStoredScene(info.sceneSource, options.sceneSource, options.overrides, &firings);
+  for (const std::string& change : options.restartOverrides) {
+    requireRestartChangeable(change, runDir);
+    options.overrides.push_back(change);  // stored with the others: a later restart keeps it
+  }
   const std::vector<std::string>& overrides = options.overrides;
   Scene scene = parseScene(options.sceneSource, files.back().string() + " (stored scene)", overrides);
+  if (!options.restartOverrides.empty() && !reached(info.time, scene.time.tEnd) &&
+      reached(info.time, info.nextOutputTime)) {
+    // A finished run's last snapshot is its final output: the extension's first output comes
+    // at the run's own cadence (the next multiple of the interval), or at the new end.
+    const double interval = scene.output.snapshotInterval;
+    info.nextOutputTime =
+        interval > 0 ? interval * (std::floor(info.time / interval * (1.0 + 1e-12)) + 1.0) : scene.time.tEnd;
+  }
+  if (!options.restartOverrides.empty() && scene.time.tEnd <= info.time * (1.0 + 1e-12))
+    throw SceneError("restart: time.t_end = " + std::to_string(scene.time.tEnd) + " s is not beyond the last "
+                     "snapshot's t = " + std::to_string(info.time) + " s of " + runDir);
   checkSnapshotMaterials(particles, scene.materials.size(), files.back().string());
   if (options.configure) options.configure(scene, options);
 
@@ -550,7 +642,7 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
     const ParticleSet& stored = f == files.back() ? particles : q;
     series.push_back({"snapshots/" + f.filename().string(), time,
                       f == files.back() ? storedParticles : stored.numReal, scene.geometry,
-                      xdmfAttributes(stored)});
+                      xdmfAttributes(stored), materialNames(materialRecords(scene))});
   }
   outputs.setSeries(series);
   outputs.truncateEnergyLog(info.step);

@@ -2,6 +2,7 @@
 // Running a scene with its outputs: snapshots (HDF5) at the scene's cadence with one XDMF series,
 // the energy ledger of every step (energy.csv), summary.json, and a progress line on a terminal.
 // A failure of the numerics writes a last snapshot and a summary with status "failed".
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -20,7 +21,17 @@ namespace ejecta {
 struct RunOptions {
   std::string outDir;                  // empty: no files written (verification in memory)
   int threads = 0;                     // 0: OpenMP's default
-  bool progress = false;               // progress line on stderr
+  bool progress = false;               // a live progress line on stderr (a terminal)
+  // A plain progress line on stderr every this many seconds of wall time (a batch job's log,
+  // where the live line's carriage returns would pile up); 0: none.
+  double progressInterval = 0.0;
+  // When the command began (scene read, particles built): summary.json's total_wall_seconds
+  // counts from here to its own writing, the end hooks included. Unset: from runScene or
+  // restartRun.
+  std::optional<std::chrono::steady_clock::time_point> started;
+  // A restart's changes to the stored scene (`ejecta run --restart DIR --set ...`): only the
+  // keys restartChangeableKeys() lists; restartRun refuses any other, with the reason.
+  std::vector<std::string> restartOverrides;
   std::string sceneSource;             // TOML text the scene came from, stored for restarts
   std::vector<std::string> overrides;  // --set strings, stored for restarts
   // Called after every step (and once after initialisation) with the simulation.
@@ -65,6 +76,11 @@ RunOutcome runScene(const Scene& scene, const RunOptions& options);
 RunOutcome runSimulation(Simulation& sim, const RunOptions& options);
 // Resumes the run in `runDir` from its last snapshot; continues writing there.
 RunOutcome restartRun(const std::string& runDir, const RunOptions& options);
+
+// The scene keys a restart may change: time.t_end (to extend a finished or interrupted run; it
+// must lie beyond the snapshot's time) and time.max_steps. Every other key would change the run's
+// physics, its particles or its outputs' cadence midway.
+const std::vector<std::string>& restartChangeableKeys();
 
 // The scene a snapshot was written from (its stored text and --set overrides). Throws
 // SceneError naming the snapshot when it holds no scene.

@@ -68,6 +68,7 @@ void writeSummaryJson(const std::string& path, const RunSummary& s) {
   doc["steps"] = s.steps;
   doc["t_end"] = s.tEnd;
   doc["wall_seconds"] = s.wallSeconds;
+  doc["total_wall_seconds"] = s.totalWallSeconds;
   doc["threads"] = s.threads;
   if (s.ranks > 1) doc["ranks"] = s.ranks;
   doc["energy"] = {{"initial", s.energy.initial},

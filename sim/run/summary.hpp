@@ -19,7 +19,10 @@ struct RunSummary {
   std::size_t particles = 0;
   long steps = 0;
   double tEnd = 0.0;         // simulation time reached [s]
-  double wallSeconds = 0.0;  // wall-clock duration [s]
+  double wallSeconds = 0.0;  // wall-clock time of the time loop, the snapshots and the in-situ
+                             // outputs at each snapshot; over every invocation of a restarted run [s]
+  double totalWallSeconds = 0.0;  // this invocation, from the command's start (scene, particles)
+                                  // to summary.json, the end hooks (crater, charts) included [s]
   int threads = 0;           // OpenMP threads used (per rank)
   int ranks = 1;             // MPI ranks (written only for a distributed run)
 

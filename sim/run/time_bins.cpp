@@ -67,7 +67,6 @@ void TimeBins::registerFields(ParticleSet& p, const Leapfrog& leapfrog, bool sum
                                "individual time steps: the bin of the step in progress (its "
                                "length is the block's / 2^bin)",
                                FieldOutput::Particles);
-    bin.xdmf = true;
     bin.halo = true;  // the limiter reads the neighbours' bins, images included
     p.declare(bin);
   }

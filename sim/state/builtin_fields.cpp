@@ -72,11 +72,6 @@ FieldSpec halo(FieldSpec f) {
   return f;
 }
 
-FieldSpec inXdmf(FieldSpec f) {
-  f.xdmf = true;
-  return f;
-}
-
 Field derived(FieldSpec f, double (*value)(const ParticleSet&, std::size_t)) {
   f.derive = value;
   return {std::move(f), FieldStorage{}};
@@ -98,35 +93,32 @@ std::vector<Field> coreFields() {
                                                   "particle velocity; RZ: (v_r, v_z, v_phi)", kParticles)),
                                    "acceleration"));
   velocity.spatial = true;
-  velocity.xdmf = true;
   FieldSpec omega = halo(scalar("omega", "1", "grad-h correction factor", kNone));
   omega.fill = 1.0;  // 1 when h is not tied to the density
   FieldSpec material = halo(scalar("material", "1", "index into the run's material table", kParticles));
   material.type = FieldType::Int32;
-  material.xdmf = true;
   FieldSpec id = halo(scalar("id", "1", "stable particle identity", kParticles));
   id.type = FieldType::Int64;
-  id.xdmf = true;
   FieldSpec temperature = gridded(scalar("temperature", "K", "temperature T0 + u / c_v of the material", kParticles));
   temperature.required = false;  // snapshots written before the thermal model lack it
   return {
       {position, member(&ParticleSet::x)},
       {velocity, member(&ParticleSet::v)},
-      {inXdmf(halo(gridded(kicked(scalar("density", "kg/m^3", "mass density", kParticles), "drho_dt")))),
+      {halo(gridded(kicked(scalar("density", "kg/m^3", "mass density", kParticles), "drho_dt"))),
        member(&ParticleSet::rho)},
       {temperature, member(&ParticleSet::temperature)},
-      {inXdmf(halo(gridded(scalar("pressure", "Pa", "pressure from the equation of state", kParticles)))),
+      {halo(gridded(scalar("pressure", "Pa", "pressure from the equation of state", kParticles))),
        member(&ParticleSet::P)},
-      {inXdmf(halo(gridded(kicked(scalar("internal_energy", "J/kg", "specific internal energy", kParticles),
-                                  "du_dt")))),
+      {halo(gridded(kicked(scalar("internal_energy", "J/kg", "specific internal energy", kParticles),
+                                  "du_dt"))),
        member(&ParticleSet::u)},
-      {inXdmf(halo(gridded(kicked(scalar("smoothing_length", "m", "SPH smoothing length h", kParticles),
-                                  "dh_dt")))),
+      {halo(gridded(kicked(scalar("smoothing_length", "m", "SPH smoothing length h", kParticles),
+                                  "dh_dt"))),
        member(&ParticleSet::h)},
-      {inXdmf(halo(gridded(scalar("sound_speed", "m/s",
+      {halo(gridded(scalar("sound_speed", "m/s",
                                   "signal speed: the equation of state's sound speed; for materials with "
                                   "strength the longitudinal speed sqrt(c^2 + 4G/(3 rho))",
-                                  kParticles)))),
+                                  kParticles))),
        member(&ParticleSet::cs)},
       derived(gridded(scalar("speed", "m/s", "magnitude of the velocity", kNone)),
               [](const ParticleSet& p, std::size_t i) {
@@ -138,8 +130,8 @@ std::vector<Field> coreFields() {
               [](const ParticleSet& p, std::size_t i) { return p.v[1][i]; }),
       derived(gridded(scalar("velocity_z", "m/s", "velocity, z component", kNone)),
               [](const ParticleSet& p, std::size_t i) { return p.v[2][i]; }),
-      {inXdmf(halo(scalar("mass", "kg", "particle mass; RZ: whole ring; 2D planar: per metre of depth",
-                          kParticles))),
+      {halo(scalar("mass", "kg", "particle mass; RZ: whole ring; 2D planar: per metre of depth",
+                          kParticles)),
        member(&ParticleSet::mass)},
       {material, member(&ParticleSet::material)},
       {id, member(&ParticleSet::id)},

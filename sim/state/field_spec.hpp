@@ -45,7 +45,6 @@ struct FieldSpec {
   int components = 1;        // 1; 3 for vectors; 4 (1D, 2D, RZ) or 6 (3D) for stress
   FieldOutput output = FieldOutput::None;
   bool required = true;      // a snapshot without it is refused (false: older files may lack it)
-  bool xdmf = false;         // listed as an attribute in snapshots.xdmf
   bool grid = false;         // a named scalar for grids and images (sim/state/particle_fields.hpp)
   double absent = 0.0;       // what grids see when the run does not carry the field
   bool halo = false;         // read from neighbours by the pair passes: ghosts and halos carry it

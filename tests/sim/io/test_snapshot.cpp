@@ -126,6 +126,9 @@ SnapshotInfo sampleInfo(Geometry geometry) {
   info.initialMomentum = {1.0e-300, -2.5, 0.1};
   info.wallSeconds = 98.7654321;
   info.sceneSource = "[scene]\nname = \"sedov\"\n# a long-ish comment\n";
+  info.materials = {{"granite", "tillotson (granite)", "collins", "grady_kipp"},
+                    {"ünïcode & <air>", "ideal_gas", "none", "none"},
+                    {"", "jwl (tnt)", "none", "none"}};
   return info;
 }
 
@@ -185,6 +188,7 @@ void expectSameInfo(const SnapshotInfo& expected, const SnapshotInfo& actual) {
     EXPECT_EQ(bits(actual.initialMomentum[d]), bits(expected.initialMomentum[d]));
   EXPECT_EQ(bits(actual.wallSeconds), bits(expected.wallSeconds));
   EXPECT_EQ(actual.sceneSource, expected.sceneSource);
+  EXPECT_EQ(actual.materials, expected.materials);
 }
 
 // Runs f and returns the message of the std::runtime_error it must throw.
@@ -270,6 +274,21 @@ TEST_F(OutputFiles, EmptySnapshotRoundTrips) {
   EXPECT_EQ(q.size(), 0u);
   EXPECT_EQ(q.numReal, 0u);
   expectSameInfo(info, back);
+}
+
+TEST_F(OutputFiles, SnapshotWithoutAMaterialTableReadsAsNone) {
+  // Snapshots written before /materials existed still read; a partial table is refused.
+  const ParticleSet p = randomParticles(4, 0, Geometry::Planar, 5);
+  writeSnapshot(path("old.h5"), p, sampleInfo(Geometry::Planar));
+  deleteLink(path("old.h5"), "/materials");
+  SnapshotInfo back;
+  readSnapshot(path("old.h5"), back);
+  EXPECT_TRUE(back.materials.empty());
+  writeSnapshot(path("partial.h5"), p, sampleInfo(Geometry::Planar));
+  deleteLink(path("partial.h5"), "/materials/eos");
+  const std::string why = errorOf([&] { readSnapshot(path("partial.h5"), back); });
+  EXPECT_NE(why.find("/materials/eos"), std::string::npos) << why;
+  EXPECT_NE(why.find("partial.h5"), std::string::npos) << why;
 }
 
 TEST_F(OutputFiles, EmptyStringsRoundTrip) {
@@ -509,9 +528,11 @@ bool tagsBalance(const std::string& xml) {
 
 TEST_F(OutputFiles, XdmfSeriesHasOneGridPerSnapshot) {
   const std::vector<XdmfEntry> entries = {
-      {"snapshots/snap_0000.h5", 0.0, 100, Geometry::Axisymmetric, xdmfAttributes(ParticleSet{})},
-      {"snapshots/snap_0001.h5", 1.25e-6, 100, Geometry::Axisymmetric, xdmfAttributes(ParticleSet{})},
-      {"snapshots/a&b.h5", 0.1, 98, Geometry::Axisymmetric, xdmfAttributes(ParticleSet{})},
+      {"snapshots/snap_0000.h5", 0.0, 100, Geometry::Axisymmetric, xdmfAttributes(ParticleSet{}),
+       {"granite", "rubble"}},
+      {"snapshots/snap_0001.h5", 1.25e-6, 100, Geometry::Axisymmetric, xdmfAttributes(ParticleSet{}),
+       {"granite", "rubble"}},
+      {"snapshots/a&b.h5", 0.1, 98, Geometry::Axisymmetric, xdmfAttributes(ParticleSet{}), {"a<b"}},
   };
   const std::string file = path("run.xdmf");
   writeXdmfSeries(file, entries);
@@ -526,7 +547,8 @@ TEST_F(OutputFiles, XdmfSeriesHasOneGridPerSnapshot) {
   EXPECT_NE(xml.find("<Time Value=\"1.25e-06\"/>"), std::string::npos);
   EXPECT_NE(xml.find("<Time Value=\"0.1\"/>"), std::string::npos);
   EXPECT_EQ(countOf(xml, "snapshots/snap_0001.h5:/particles/position"), 1u);
-  EXPECT_EQ(countOf(xml, "snapshots/snap_0001.h5:/particles/"), 10u);  // geometry + 9 attributes
+  // Every /particles dataset of a plain particle set: geometry + 10 attributes.
+  EXPECT_EQ(countOf(xml, "snapshots/snap_0001.h5:/particles/"), 11u);
   EXPECT_NE(xml.find("snapshots/a&amp;b.h5:/particles/velocity"), std::string::npos);
   EXPECT_NE(xml.find("Dimensions=\"98 3\""), std::string::npos);
   for (const char* name : {"density", "pressure", "internal_energy", "smoothing_length", "mass",
@@ -537,6 +559,55 @@ TEST_F(OutputFiles, XdmfSeriesHasOneGridPerSnapshot) {
         << name;
   EXPECT_EQ(countOf(xml, "<Attribute Name=\"velocity\" AttributeType=\"Vector\""),
             entries.size());
+  // Units on every attribute, material names by id on every grid (escaped).
+  EXPECT_EQ(countOf(xml, "<Information Name=\"units\""), 10 * entries.size());
+  EXPECT_NE(xml.find("<Information Name=\"units\" Value=\"kg/m^3\"/>"), std::string::npos);
+  EXPECT_EQ(countOf(xml, "<Information Name=\"materials\" Value=\"0: granite, 1: rubble\"/>"), 2u);
+  EXPECT_EQ(countOf(xml, "<Information Name=\"materials\" Value=\"0: a&lt;b\"/>"), 1u);
+}
+
+TEST_F(OutputFiles, XdmfGivesTensorsAsMatricesWithNamedColumns) {
+  // The deviatoric stress (xx, yy, zz, xy; RZ rr, zz, theta-theta, rz) is no XDMF Tensor6 in
+  // either order or size: a Matrix of the (N, 4) dataset, its columns named.
+  ParticleSet p;
+  p.append({0, 0, 0}, {0, 0, 0}, 1.0, 1.0, 0.0, 0.1, 0);
+  p.enableStrength(4);
+  const std::vector<XdmfAttribute> attributes = xdmfAttributes(p);
+  const auto stress = std::find_if(attributes.begin(), attributes.end(),
+                                   [](const XdmfAttribute& a) { return a.name == "stress"; });
+  ASSERT_NE(stress, attributes.end());
+  EXPECT_TRUE(stress->tensor);
+  EXPECT_EQ(xdmfComponentNames(*stress, Geometry::Axisymmetric),
+            (std::vector<std::string>{"rr", "zz", "tt", "rz"}));
+  EXPECT_EQ(xdmfComponentNames(*stress, Geometry::Planar),
+            (std::vector<std::string>{"xx", "yy", "zz", "xy"}));
+  writeXdmfSeries(path("stress.xdmf"), {{"s.h5", 0.0, 7, Geometry::Axisymmetric, attributes, {}}});
+  const std::string xml = readText(path("stress.xdmf"));
+  EXPECT_TRUE(tagsBalance(xml)) << xml;
+  EXPECT_NE(xml.find("<Attribute Name=\"stress\" AttributeType=\"Matrix\""), std::string::npos) << xml;
+  EXPECT_NE(xml.find("<Information Name=\"components\" Value=\"rr, zz, tt, rz\"/>"), std::string::npos);
+  EXPECT_NE(xml.find("Dimensions=\"7 4\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">s.h5:/particles/stress<"),
+            std::string::npos);
+  EXPECT_NE(xml.find("<Attribute Name=\"plastic_strain\" AttributeType=\"Scalar\""), std::string::npos);
+  // The connectivity the Xdmf3 readers need, from the snapshot's vertex index.
+  EXPECT_NE(xml.find("<DataItem Dimensions=\"7\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">s.h5:/xdmf/vertices</DataItem>"),
+            std::string::npos);
+}
+
+TEST_F(OutputFiles, SnapshotsHoldTheXdmfVertexIndex) {
+  const ParticleSet p = randomParticles(9, 0, Geometry::Spatial, 3);
+  writeSnapshot(path("v.h5"), p, sampleInfo(Geometry::Spatial));
+  const hid_t f = H5Fopen(path("v.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  const hid_t d = H5Dopen2(f, "/xdmf/vertices", H5P_DEFAULT);
+  ASSERT_GE(d, 0);
+  std::vector<int> index(9, -1);
+  EXPECT_GE(H5Dread(d, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, index.data()), 0);
+  for (int i = 0; i < 9; ++i) EXPECT_EQ(index[i], i);
+  H5Dclose(d);
+  H5Fclose(f);
+  EXPECT_EQ(xdmfVertexPrecision(9), 4);
+  EXPECT_EQ(xdmfVertexPrecision(std::size_t{1} << 31), 8);
 }
 
 TEST_F(OutputFiles, EmptyXdmfSeriesIsWellFormed) {

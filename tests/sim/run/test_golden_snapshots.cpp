@@ -135,7 +135,7 @@ void fingerprintSnapshot(const fs::path& file, Fingerprint& out) {
 }
 
 void fingerprintJson(const nlohmann::json& j, const std::string& prefix, Fingerprint& out) {
-  static const std::vector<std::string> kVolatile = {"wall_seconds", "particle_updates_per_second",
+  static const std::vector<std::string> kVolatile = {"wall_seconds", "total_wall_seconds", "particle_updates_per_second",
                                                      "threads"};
   if (j.is_object()) {
     for (const auto& [k, value] : j.items()) {

@@ -43,7 +43,6 @@ class PacedClock : public PhysicsPackage {
     tracer.units = "s";
     tracer.description = "the particle's own clock (test package)";
     tracer.output = FieldOutput::Particles;
-    tracer.xdmf = true;
     tracer.evolution = Evolution::Kicked;
     tracer.rate = "dtracer_dt";
     p.declare(tracer);
