@@ -12,6 +12,7 @@
 #include "apps/cli_reference.hpp"
 #include "apps/commands.hpp"
 #include "apps/launch_check.hpp"
+#include "apps/thread_limit.hpp"
 #include "sim/io/snapshot.hpp"  // kEjectaVersion
 #include "sim/parallel/communicator.hpp"
 
@@ -88,6 +89,13 @@ int main(int argc, char** argv) {
   verifyCmd->add_option("--resolutions", verify.resolutions, "Number of resolutions for the convergence study");
   verifyCmd->add_option("--out,-o", verify.outDir, "Write profiles, the convergence table (CSV) and their charts (PNG) here");
   verifyCmd->add_flag("--no-charts", verify.noCharts, "With --out: the CSVs only");
+
+  // --threads of the commands that do not hand a count to a library (apps/thread_limit.hpp).
+  int commandThreads = 0;
+  const auto addThreads = [&commandThreads](CLI::App* command) {
+    command->add_option("--threads,-j", commandThreads, "Threads (OpenMP and TBB; default: all cores)")
+        ->check(countPerCore("--threads"));
+  };
 
   ejecta::app::FieldsArgs fieldsArgs;
   CLI::App* fieldsCmd = app.add_subcommand("fields", "Grid a snapshot's particles into sparse OpenVDB grids");
@@ -183,6 +191,9 @@ int main(int argc, char** argv) {
   keysCmd->add_flag("--markdown", keysArgs.markdown, "The key reference of docs/scenes.md (Markdown)");
   keysCmd->add_option("--write", keysArgs.write, "Replace the reference between the markers of this file (docs/scenes.md)");
 
+  for (CLI::App* command : {fieldsCmd, craterCmd, sweepCmd, vfCmd, thermalCmd, renderCmd, whippleCmd, undexCmd})
+    addThreads(command);
+
   ejecta::app::ScenesArgs scenesArgs;
   CLI::App* scenesCmd = app.add_subcommand("scenes", "List the shipped scenes (run one by name: ejecta run impact_rz)");
   scenesCmd->add_option("--kind", scenesArgs.kind, "Only this kind: scene (ejecta run), geometry (ejecta viewfactor), study (ejecta thermal, ejecta whipple)");
@@ -223,6 +234,7 @@ int main(int argc, char** argv) {
   if (ejecta::app::launchedRanks() && ejecta::app::distributedCommand(subcommand))
     mpi.emplace(&argc, &argv);
   const bool distributed = mpi && ejecta::app::launchedRanks().value_or(1) > 1;
+  const ejecta::app::ThreadLimit threadLimit(commandThreads);
   try {
     if (*runCmd) return ejecta::app::runCommand(run);
     if (*verifyCmd) return ejecta::app::verifyCommand(verify);

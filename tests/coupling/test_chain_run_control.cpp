@@ -81,3 +81,20 @@ TEST_F(RunControl, AFinishedRunIsExtendedAtARestart) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CommandLine, EveryComputingCommandTakesThreads) {
+  // apps/thread_limit.hpp: the commands that do not hand a count to a library cap OpenMP and TBB.
+  for (const char* command : {"run", "verify", "fields", "crater", "sweep", "viewfactor", "thermal",
+                              "render", "whipple", "undex-reference"}) {
+    std::string out;
+    ASSERT_EQ(runCommand(kEjecta + " " + command + " --help", out), 0) << command;
+    EXPECT_NE(out.find("--threads"), std::string::npos) << command << " has no --threads:\n" << out;
+  }
+  std::string out;
+  EXPECT_EQ(runCommand(kEjecta + " fields nothing.h5 --threads 0", out), 1) << out;
+  EXPECT_NE(out.find("--threads must be a whole number from 1"), std::string::npos) << out;
+}
+
+}  // namespace
