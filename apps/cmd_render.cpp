@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "apps/commands.hpp"
+#include "coupling/category_images.hpp"
 #include "coupling/grid_images.hpp"
 #include "coupling/particle_images.hpp"
 #include "core/units.hpp"
@@ -184,6 +185,7 @@ int renderGridFile(const RenderArgs& args, const fs::path& file) {
   }
 
   GridSliceImageOptions o = args.slice.empty() ? GridSliceImageOptions{} : parseSlice(args.slice);
+  o.axes = args.axes;
   if (!args.grid.empty()) o.grid = args.grid;
   o.log = args.log;
   const fs::path out = args.out.empty() ? fs::path("grid_" + o.grid + ".png") : fs::path(args.out);
@@ -216,6 +218,7 @@ int renderCommand(const RenderArgs& args) {
   ParticleImageOptions options;
   if (!args.field.empty()) options.field = args.field;
   options.log = args.log;
+  options.axes = args.axes;
   if (!args.cut.empty()) options.cut = args.cut;
   options.cutAt = cutAtOf(args).value_or(0.0);
   options.camera = cameraOf(args);
@@ -228,12 +231,31 @@ int renderCommand(const RenderArgs& args) {
   if (spatialDimension(geometry) != 3 && (options.camera || !args.cutAt.empty()))
     throw std::invalid_argument("--camera and --cut-at are for 3D pictures; " + snapshot.filename().string() +
                                 " is drawn as a plane section (--view 3d to draw it in 3D)");
-  const fs::path out = args.out.empty() ? fs::path(options.field + ".png") : fs::path(args.out);
+  if (!args.plot.empty() && args.plot != "materials" && args.plot != "failure")
+    throw std::invalid_argument("--plot '" + args.plot + "': expected materials or failure");
+  if (!args.plot.empty() && !args.field.empty())
+    throw std::invalid_argument("--plot draws categories, --field a field's values: give one");
+  const std::string what = args.plot.empty() ? options.field : args.plot;
+  const fs::path out = args.out.empty() ? fs::path(what + ".png") : fs::path(args.out);
   if (args.size < 64 || args.size > 8192)
     throw std::invalid_argument("--size " + std::to_string(args.size) + ": expected 64 to 8192 pixels");
   render::Renderer renderer({.width = args.size, .height = args.size});
-  writeParticleImage(renderer, p, geometry, info.time, info.scene, options, out);
-  std::printf("ejecta: %s (%s at t = %.6g s, %zu particles) -> %s\n", options.field.c_str(),
+  if (!args.plot.empty()) {
+    // The material table the snapshot stores (/materials); ids alone for older files.
+    MaterialLegend legend;
+    for (const SnapshotMaterial& m : info.materials) {
+      legend.names.push_back(m.name);
+      legend.strength.push_back(m.strength != "none");
+    }
+    const Categories categories =
+        args.plot == "materials" ? materialCategories(p, legend) : failureCategories(p, legend);
+    writeCategoryImage(renderer, p, geometry, info.time,
+                       info.scene + (args.plot == "materials" ? ": materials" : ": failure status"),
+                       categories, options, out);
+  } else {
+    writeParticleImage(renderer, p, geometry, info.time, info.scene, options, out);
+  }
+  std::printf("ejecta: %s (%s at t = %.6g s, %zu particles) -> %s\n", what.c_str(),
               snapshot.filename().c_str(), info.time, p.numReal, out.c_str());
   return 0;
 }

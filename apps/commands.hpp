@@ -99,6 +99,8 @@ struct RenderArgs {
   std::string input;                   // SNAPSHOT.h5, FILE.vdb or RUN_DIR (its last snapshot; with
                                        // a grid option below, its last fields/fields_NNNN.vdb)
   std::string field;                   // particle field (default density)
+  std::string plot;                    // materials | failure: a categorical picture instead
+  bool axes = false;                   // distance axes (plane, RZ pictures and grid slices)
   std::string view;                    // auto | plane | rz | 3d
   std::string out;                     // FILE.png (default <field>.png, grid_<G>.png, iso_<G>.png)
   int size = 1024;                     // pixels

@@ -157,6 +157,9 @@ int main(int argc, char** argv) {
   CLI::App* renderCmd = app.add_subcommand("render", "Draw a snapshot's particles coloured by a field, or a slice or iso-surface of a grid file (PNG)");
   renderCmd->add_option("input", renderArgs.input, "Snapshot (.h5), grid file (.vdb) or run directory")->required();
   renderCmd->add_option("--field,-f", renderArgs.field, "Particle field (default density)");
+  renderCmd->add_flag("--axes", renderArgs.axes, "Distance axes in metres along the picture's edges (plane and RZ pictures, grid slices)");
+  renderCmd->add_option("--plot", renderArgs.plot,
+                        "materials: where each material is; failure: each particle's status (no strength, intact, plastic, damaged, failed)");
   renderCmd->add_option("--view", renderArgs.view, "auto | plane | rz | 3d");
   renderCmd->add_option("--out,-o", renderArgs.out, "Output PNG (default <field>.png; grid files: grid_<G>.png, iso_<G>.png)");
   renderCmd->add_option("--size", renderArgs.size, "Image size in pixels, 64 to 8192 (default 1024)");

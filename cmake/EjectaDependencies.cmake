@@ -11,6 +11,10 @@ find_package(Eigen3 3.4 CONFIG REQUIRED)        # Eigen3::Eigen (radiation/ impl
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)  # PkgConfig::OSMESA (render/, GL included)
 find_package(PNG REQUIRED)                      # PNG::PNG (render/)
+# Text in images (render/outline_font.cpp): FreeType and DejaVu Sans, both in Debian
+# (libfreetype-dev, fonts-dejavu-core); without them images use the built-in bitmap font.
+find_package(Freetype QUIET)
+find_file(EJECTA_FONT_FILE DejaVuSans.ttf PATHS /usr/share/fonts/truetype/dejavu NO_DEFAULT_PATH)
 find_package(HDF5 REQUIRED COMPONENTS C)
 find_package(tomlplusplus 3 CONFIG REQUIRED)
 find_package(CLI11 2 CONFIG REQUIRED)

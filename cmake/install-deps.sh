@@ -6,7 +6,7 @@ packages=(
   build-essential cmake pkg-config
   libhdf5-dev nlohmann-json3-dev libtomlplusplus-dev libcli11-dev libgtest-dev libbenchmark-dev
   libeigen3-dev libtbb-dev libopenvdb-dev libboost-iostreams-dev libopenvdb-tools
-  libembree-dev libosmesa6-dev libpng-dev hdf5-tools
+  libembree-dev libosmesa6-dev libpng-dev libfreetype-dev fonts-dejavu-core hdf5-tools
   libopenmpi-dev openmpi-bin
   python3-matplotlib python3-numpy
   python3-h5py python3-openvdb python3-pytest python3-venv python3-pip python3-setuptools

@@ -33,19 +33,22 @@ std::vector<std::string> writeCraterCharts(render::ChartRunner& charts, const fs
   const fs::path profile = dir / "crater_profile.csv";
   if (csvRowCount(profile) > 0) {
     std::vector<render::ChartSeries> series;
+    // Depth drawn downward, below the pre-impact surface: the crater looks like a crater.
     if (geometry == Geometry::Axisymmetric) {
-      series = {{.y = "depth_mean_m", .label = "depth"}};
+      series = {{.y = "depth_mean_m", .label = "crater floor", .negate = true}};
     } else if (geometry == Geometry::Planar) {
-      series = {{.y = "depth_min_m", .label = "shallower side"}, {.y = "depth_max_m", .label = "deeper side"}};
+      series = {{.y = "depth_min_m", .label = "shallower side", .negate = true},
+                {.y = "depth_max_m", .label = "deeper side", .negate = true}};
     } else {
-      series = {{.y = "depth_mean_m", .label = "mean over azimuths"},
-                {.y = "depth_min_m", .label = "shallowest azimuth"},
-                {.y = "depth_max_m", .label = "deepest azimuth"}};
+      series = {{.y = "depth_mean_m", .label = "mean over azimuths", .negate = true},
+                {.y = "depth_min_m", .label = "shallowest azimuth", .negate = true},
+                {.y = "depth_max_m", .label = "deepest azimuth", .negate = true}};
     }
     charts.writeChart({.csv = profile, .x = "distance_m", .series = series,
                        .xlabel = "distance from the axis along the original surface [m]",
-                       .ylabel = "depth below the original surface [m]",
+                       .ylabel = "height relative to the original surface [m]",
                        .title = sceneName + ": crater profile at the end",
+                       .hlines = {{.y = 0.0, .label = "pre-impact surface"}},
                        .out = dir / "crater_profile.png"});
     written.push_back("crater_profile.png");
   }

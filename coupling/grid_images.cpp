@@ -194,6 +194,9 @@ GridImageSummary writeGridSliceImage(render::Renderer& renderer, const std::file
                                 ? h.scene + ": " + axis + " = " + number(slice.value) + " m"
                                 : options.title;
   scene.annotations.time = h.time;
+  // The plane's in-plane axes, in order (fields/grid_slice.hpp): x = 0 -> (y, z), ...
+  scene.annotations.axes = options.axes;
+  scene.annotations.axisNames = {kAxisNames[options.axis == 0 ? 1 : 0], kAxisNames[options.axis == 2 ? 1 : 2]};
   render::View view;
   view.kind = render::ViewKind::Plane;
   const render::Frame frame = renderer.render(scene, view);

@@ -25,6 +25,7 @@ struct GridSliceImageOptions {
   std::optional<double> value;
   bool log = false;
   std::string title;             // default "<scene>: z = 0 m" (the colour bar names the grid)
+  bool axes = false;             // distance axes along the edges
 };
 
 struct IsoSurfaceImageOptions {

@@ -1,5 +1,8 @@
 #include "coupling/particle_images.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "render/png_io.hpp"
@@ -7,9 +10,23 @@
 
 namespace ejecta::coupling {
 
+std::vector<double> particleDiscRadii(const ParticleSet& p, Geometry geometry) {
+  const std::size_t n = p.numReal;
+  std::vector<double> radii(n);
+  const int d = spatialDimension(geometry);
+  for (std::size_t i = 0; i < n; ++i) {
+    double volume = p.mass[i] / p.rho[i];
+    if (geometry == Geometry::Axisymmetric)
+      volume /= 2.0 * std::numbers::pi * std::max(std::abs(p.x[0][i]), 0.25 * p.h[i]);
+    const double spacing = d == 3 ? std::cbrt(volume) : d == 2 ? std::sqrt(volume) : volume;
+    radii[i] = std::isfinite(spacing) && spacing > 0 ? 0.75 * spacing : 0.5 * p.h[i];
+  }
+  return radii;
+}
+
 render::ParticleLayer particleLayer(const ParticleSet& p, Geometry geometry,
-                                    const ParticleImageOptions& options,
-                                    std::vector<double>& values) {
+                                    const ParticleImageOptions& options, ParticleLayerArrays& arrays) {
+  std::vector<double>& values = arrays.values;
   const ParticleFieldInfo* info = findParticleScalarField(options.field);
   if (!info)
     throw std::invalid_argument("unknown field '" + options.field + "' (known: " +
@@ -21,6 +38,8 @@ render::ParticleLayer particleLayer(const ParticleSet& p, Geometry geometry,
   layer.y = std::span<const double>(p.x[1].data(), n);
   if (spatialDimension(geometry) == 3) layer.z = std::span<const double>(p.x[2].data(), n);
   layer.h = std::span<const double>(p.h.data(), n);
+  arrays.radii = particleDiscRadii(p, geometry);
+  layer.radius = arrays.radii;
   layer.values = values;
   layer.scale.kind = options.log ? render::ScaleKind::Log : render::ScaleKind::Linear;
   // A robust range: a few extreme particles (a jet, the hottest ejecta) do not wash out the rest.
@@ -71,12 +90,18 @@ render::View particleView(Geometry geometry, const ParticleImageOptions& options
 void writeParticleImage(render::Renderer& renderer, const ParticleSet& p, Geometry geometry,
                         double time, const std::string& sceneName,
                         const ParticleImageOptions& options, const std::filesystem::path& out) {
-  std::vector<double> values;
+  ParticleLayerArrays arrays;
   render::Picture scene;
-  scene.particles.push_back(particleLayer(p, geometry, options, values));
+  scene.particles.push_back(particleLayer(p, geometry, options, arrays));
   scene.annotations.title = options.title.empty() ? sceneName + ": " + options.field : options.title;
   scene.annotations.time = time;
+  setDistanceAxes(scene.annotations, geometry, options.axes);
   render::writePng(out, renderer.render(scene, particleView(geometry, options)).image);
+}
+
+void setDistanceAxes(render::Annotations& annotations, Geometry geometry, bool on) {
+  annotations.axes = on && spatialDimension(geometry) != 3;
+  if (geometry == Geometry::Axisymmetric) annotations.axisNames = {"r", "z"};
 }
 
 }  // namespace ejecta::coupling

@@ -21,16 +21,31 @@ struct ParticleImageOptions {
   double cutAt = 0.0;             // [m]
   std::optional<render::Camera> camera;  // 3D; none: look at everything from above and aside
   std::string title;              // default: "<scene>: <field>"
+  bool axes = false;              // distance axes along the edges (plane and RZ pictures)
 };
+
+// The strip's axes for `geometry`: on when asked, named x, y (RZ: r, z).
+void setDistanceAxes(render::Annotations& annotations, Geometry geometry, bool on);
 
 // The scene file's [images.camera] as the renderer takes it.
 render::Camera renderCamera(const ImageCamera& camera);
 
-// The layer of the real particles coloured by `options.field`; its values live in `values`,
-// which must outlive the layer's use. Throws std::invalid_argument for an unknown field.
+// What a particle layer points into: it must outlive the layer's use.
+struct ParticleLayerArrays {
+  std::vector<double> values;  // the field coloured by
+  std::vector<double> radii;   // each disc's radius [m] (particleDiscRadii)
+};
+
+// The layer of the real particles coloured by `options.field`, each a disc sized to its own
+// spacing. Throws std::invalid_argument for an unknown field.
 render::ParticleLayer particleLayer(const ParticleSet& p, Geometry geometry,
-                                    const ParticleImageOptions& options,
-                                    std::vector<double>& values);
+                                    const ParticleImageOptions& options, ParticleLayerArrays& arrays);
+
+// Disc radii that tile the picture without gaps: 0.75 of each particle's own spacing, the
+// side of its volume m / rho (per unit depth in 2D planar; RZ: m / (2 pi r rho), the ring's
+// cross-section). A square lattice needs 1/sqrt(2) = 0.707 of the spacing to cover its cells'
+// centres: below that the gaps form a moire. Falls back to h / 2 where the volume is not finite.
+std::vector<double> particleDiscRadii(const ParticleSet& p, Geometry geometry);
 
 // The view that suits the geometry: a plane, RZ mirrored about the axis, or 3D through the
 // options' camera (or an automatic one), cut in half. Throws std::invalid_argument for an unknown

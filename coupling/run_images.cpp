@@ -9,6 +9,7 @@
 
 #include "coupling/crater_charts.hpp"
 #include "coupling/csv_header.hpp"
+#include "coupling/category_images.hpp"
 #include "coupling/grid_images.hpp"
 #include "coupling/particle_images.hpp"
 #include "fields/grid_slice.hpp"
@@ -132,6 +133,16 @@ void addImageOutputs(RunOptions& options, const Scene& scene, bool charts) {
     // The fields hook runs before this one (cmd_run.cpp's configure adds it first), so at an
     // output its cadence selects, the grid file of that output is on disk.
     const bool gridFrames = scene.fields.enabled && (!im.grids.empty() || im.surface);
+    // The categorical pictures: where each material is (more than one), and the failure status
+    // (any strength or fracture).
+    MaterialLegend legend;
+    bool solids = false;
+    for (const MaterialSpec& m : scene.materials) {
+      legend.names.push_back(m.name);
+      legend.strength.push_back(m.strength.present);
+      solids = solids || m.strength.present || m.fracture.present;
+    }
+    const bool materialFrames = scene.materials.size() > 1;
     const int fieldsEvery = scene.fields.every;
     // One renderer (one GL context) for the whole run, made at the first frame.
     auto renderer = std::make_shared<std::unique_ptr<render::Renderer>>();
@@ -157,6 +168,17 @@ void addImageOutputs(RunOptions& options, const Scene& scene, bool charts) {
         writeParticleImage(**renderer, all, geometry, info.time, name, o,
                            render::framePath(dir, field, static_cast<int>(info.snapshotIndex)));
       }
+      ParticleImageOptions view;
+      view.cut = im.cut;
+      view.cutAt = im.cutAt.value_or(0.0);
+      if (im.camera) view.camera = renderCamera(*im.camera);
+      const int frame = static_cast<int>(info.snapshotIndex);
+      if (materialFrames)
+        writeCategoryImage(**renderer, all, geometry, info.time, name + ": materials",
+                           materialCategories(all, legend), view, render::framePath(dir, "materials", frame));
+      if (solids)
+        writeCategoryImage(**renderer, all, geometry, info.time, name + ": failure status",
+                           failureCategories(all, legend), view, render::framePath(dir, "failure", frame));
       if (gridFrames && (final || info.snapshotIndex % fieldsEvery == 0))
         writeGridFrames(**renderer, dir, im, info.snapshotIndex);
     };

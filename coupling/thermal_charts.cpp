@@ -67,11 +67,12 @@ void writeSizingChart(render::ChartRunner& charts, const radiation::ThermalResul
       anyInfeasible = anyInfeasible || !z.feasible;
     }
   std::string title = name + ": coating needed on each face";
-  if (!anyNeeded && !anyInfeasible) title += " (none: every face stays below its limit)";
-  else if (anyInfeasible) title += " (a missing bar: that coating cannot protect the face)";
+  if (anyInfeasible) title += " (a missing bar: that coating cannot protect the face)";
   render::ChartSpec spec{.kind = render::ChartKind::Bar, .csv = dir / "sizing_chart.csv",
                          .x = "patch", .xlabel = "face", .ylabel = "coating thickness [mm]",
                          .title = title, .out = dir / "sizing.png"};
+  // All bars zero would be empty axes: say what they mean.
+  if (!anyNeeded && !anyInfeasible) spec.note = "no coating needed: every face stays below its limit";
   for (const std::string& c : coatings) spec.series.push_back({.y = c + "_mm", .label = c});
   charts.writeChart(spec);
   written.push_back("sizing.png");

@@ -77,9 +77,10 @@ void writeThermalPicture(render::Renderer& renderer, const ParticleSet& particle
     for (const radiation::PatchThermal& pt : result.patches)
       if (pt.patch == mesh.patchNames[p]) faceTemperature[p] = pt.steadyTemperature;
 
-  std::vector<double> temperature;
+  ParticleLayerArrays arrays;
   render::ParticleLayer hot =
-      particleLayer(particles, geometry, {.field = "temperature", .log = true, .cut = "z", .cutAt = 0.0, .camera = std::nullopt, .title = ""}, temperature);
+      particleLayer(particles, geometry, {.field = "temperature", .log = true, .cut = "z", .cutAt = 0.0, .camera = std::nullopt, .title = ""}, arrays);
+  const std::vector<double>& temperature = arrays.values;
   // One scale for the rock and the faces, so their colours compare.
   const double faceMax = *std::max_element(faceTemperature.begin(), faceTemperature.end());
   // The rock's robust range on a log scale (render's own percentiles), widened to the faces.
@@ -108,9 +109,17 @@ void writeThermalPicture(render::Renderer& renderer, const ParticleSet& particle
     for (std::uint32_t p : mesh.patchOf) perTriangle.push_back(faceTemperature[p]);
     body.triangleValues = perTriangle;
   }
-  body.scale = hot.scale;
+  // The faces on a scale of their own (on the rock's they were one colour: they span a few
+  // hundred kelvin of the rock's thousands), with their own colour bar.
+  body.scale = render::ColorScaleSpec{};
+  body.scale.map = render::ColorMapName::Viridis;
+  const auto [coolest, hottest] = std::minmax_element(faceTemperature.begin(), faceTemperature.end());
+  body.scale.min = *coolest;
+  body.scale.max = *hottest > *coolest ? *hottest : *coolest + 1.0;
   body.shaded = !planar;
-  body.colorBar = false;
+  body.field = "face steady temperature (eq. 4.8)";
+  body.units = "K";
+  body.colorBar = true;
 
   render::Picture scene;
   scene.meshes.push_back(body);

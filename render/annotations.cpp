@@ -5,6 +5,7 @@
 
 #include "render/font.hpp"
 #include "render/labels.hpp"
+#include "render/ticks.hpp"
 
 namespace ejecta::render {
 
@@ -17,12 +18,18 @@ constexpr int kBarHeight = 10;  // the colour gradient
 constexpr int kTick = 3;        // tick marks under the gradient
 constexpr int kBarGap = 5;      // between colour bars
 
+constexpr int kLegendColumns = 3;
+
+int legendRows(const Annotations& a) {
+  return static_cast<int>((a.legend.size() + kLegendColumns - 1) / kLegendColumns);
+}
+
 int leftLines(const Annotations& a, bool scaleBar) {
   return (a.title.empty() ? 0 : 1) + (a.time ? 1 : 0) + (scaleBar ? 1 : 0);
 }
 
 // label, 2, bar, tick, 1, tick labels
-int colorBarBlock(int s) { return (kGlyphHeight + 2 + kBarHeight + kTick + 1 + kGlyphHeight) * s; }
+int colorBarBlock(int s) { return 2 * textHeight(s) + (2 + kBarHeight + kTick + 1) * s; }
 
 PixelRect textBox(int x, int y, const std::string& text, int s) {
   return {x, y, x + textWidth(text, s), y + textHeight(s)};
@@ -33,9 +40,12 @@ PixelRect textBox(int x, int y, const std::string& text, int s) {
 int stripHeight(const Annotations& a, std::size_t colorBarCount, int s) {
   const int left = leftLines(a, a.scaleBar);
   const int bars = a.colorBars ? static_cast<int>(colorBarCount) : 0;
-  if (left == 0 && bars == 0) return 0;
-  const int leftHeight = left > 0 ? left * (kGlyphHeight + kLineGap) * s - kLineGap * s : 0;
-  const int rightHeight = bars > 0 ? bars * colorBarBlock(s) + (bars - 1) * kBarGap * s : 0;
+  const int legend = legendRows(a);
+  if (left == 0 && bars == 0 && legend == 0) return 0;
+  const int leftHeight = left > 0 ? left * (textHeight(s) + kLineGap * s) - kLineGap * s : 0;
+  int rightHeight = bars > 0 ? bars * colorBarBlock(s) + (bars - 1) * kBarGap * s : 0;
+  if (legend > 0)
+    rightHeight += (bars > 0 ? kBarGap * s : 0) + legend * (textHeight(s) + kLineGap * s) - kLineGap * s;
   return 2 * kPad * s + std::max(leftHeight, rightHeight);
 }
 
@@ -47,8 +57,8 @@ StripLayout layoutStrip(const Annotations& a, const std::vector<ColorBarEntry>& 
   const bool scaleBar = a.scaleBar && pixelsPerMetre > 0.0 && std::isfinite(pixelsPerMetre);
   const std::size_t barCount = a.colorBars ? bars.size() : 0;
   out.height = stripHeight(a, barCount, s);
-  const int pad = kPad * s, line = kGlyphHeight * s;
-  const int leftEnd = barCount > 0 ? imageWidth * 2 / 5 : imageWidth - pad;
+  const int pad = kPad * s, line = textHeight(s);
+  const int leftEnd = barCount > 0 || !a.legend.empty() ? imageWidth * 2 / 5 : imageWidth - pad;
   int y = top + pad;
   if (!a.title.empty()) {
     out.titleText = a.title;
@@ -77,32 +87,56 @@ StripLayout layoutStrip(const Annotations& a, const std::vector<ColorBarEntry>& 
     }
   }
   if (barCount > 0) {
-    const int x0 = imageWidth * 9 / 20, x1 = imageWidth - pad;
     int by = top + pad;
     for (std::size_t b = 0; b < barCount; ++b) {
-      const ColorScale& scale = bars[b].scale;
+      const ColorBarEntry& entry = bars[b];
+      const TickSet ticks = colorBarTicks(entry.scale);
       ColorBarPlacement p;
-      p.labelText = bars[b].label;
+      p.labelText = entry.label;
+      if (entry.scale.kind() == ScaleKind::Log) p.labelText += " (log)";
+      if (!ticks.factor.empty()) p.labelText += ", " + ticks.factor;
+      // Arrows take room at the clipped ends, outside the gradient.
+      const int arrow = kBarHeight * s;
+      const int x0 = imageWidth * 9 / 20 + (entry.clippedLow ? arrow + s : 0);
+      const int x1 = imageWidth - pad - (entry.clippedHigh ? arrow + s : 0);
       const int labelWidth = textWidth(p.labelText, s);
       p.label = textBox(std::max(x0, (x0 + x1 - labelWidth) / 2), by, p.labelText, s);
       p.bar = {x0, by + line + 2 * s, x1, by + line + (2 + kBarHeight) * s};
+      if (entry.clippedLow) p.lowArrow = {x0 - s - arrow, p.bar.y0, x0 - s, p.bar.y1};
+      if (entry.clippedHigh) p.highArrow = {x1 + s, p.bar.y0, x1 + s + arrow, p.bar.y1};
       const int ty = p.bar.y1 + (kTick + 1) * s;
-      p.minText = formatNumber(scale.min());
-      p.maxText = formatNumber(scale.max());
-      p.minLabel = textBox(x0, ty, p.minText, s);
-      const int maxWidth = textWidth(p.maxText, s);
-      p.maxLabel = textBox(x1 - maxWidth, ty, p.maxText, s);
-      const double mid = scale.kind() == ScaleKind::Log ? std::sqrt(scale.min() * scale.max())
-                                                        : (scale.min() + scale.max()) / 2.0;
-      p.midText = formatNumber(mid);
-      const int midWidth = textWidth(p.midText, s);
-      const PixelRect midBox = textBox((x0 + x1 - midWidth) / 2, ty, p.midText, s);
-      if (midBox.x0 > p.minLabel.x1 + 2 * s && midBox.x1 < p.maxLabel.x0 - 2 * s)
-        p.midLabel = midBox;
-      else
-        p.midText.clear();
+      int lastRight = -1 << 30;
+      for (const Tick& t : ticks.ticks) {
+        ColorBarTick placed;
+        placed.x = x0 + static_cast<int>(std::lround(t.position * (x1 - x0 - 1)));
+        placed.text = t.text;
+        const int w = textWidth(t.text, s);
+        const int left = std::clamp(placed.x - w / 2, x0, x1 - w);
+        if (left > lastRight + 2 * s) {
+          placed.box = textBox(left, ty, t.text, s);
+          lastRight = placed.box.x1;
+        }
+        p.ticks.push_back(placed);
+      }
       out.colorBars.push_back(p);
       by += colorBarBlock(s) + kBarGap * s;
+    }
+  }
+  if (!a.legend.empty()) {
+    // Below the colour bars: a grid of swatch-and-name cells, three to a row.
+    int ly = top + pad;
+    if (barCount > 0) ly += static_cast<int>(barCount) * (colorBarBlock(s) + kBarGap * s);
+    const int x0 = imageWidth * 9 / 20, x1 = imageWidth - pad;
+    const int cell = (x1 - x0) / kLegendColumns, swatch = textHeight(s);
+    for (std::size_t k = 0; k < a.legend.size(); ++k) {
+      const int row = static_cast<int>(k) / kLegendColumns, column = static_cast<int>(k) % kLegendColumns;
+      const int cx = x0 + column * cell, cy = ly + row * (textHeight(s) + kLineGap * s);
+      LegendPlacement e;
+      e.swatch = {cx, cy, cx + swatch, cy + swatch};
+      e.text = a.legend[k].label;
+      e.label = textBox(cx + swatch + 3 * s, cy, e.text, s);
+      e.color = toRgba8(a.legend[k].color);
+      out.legend.push_back(e);
     }
   }
   return out;
@@ -137,16 +171,35 @@ void drawStrip(Image& image, const StripLayout& layout, const std::vector<ColorB
       const double t = columns > 1 ? static_cast<double>(x - r.x0) / (columns - 1) : 0.0;
       image.fillRect(x, r.y0, x + 1, r.y1, toRgba8(scale.map().at(t)));
     }
-    // Ticks at the ends and the middle.
     const int tickBottom = r.y1 + 1 + kTick * s;
-    image.fillRect(r.x0, r.y1 + 1, r.x0 + s, tickBottom, ink);
-    image.fillRect(r.x1 - s, r.y1 + 1, r.x1, tickBottom, ink);
-    const int xm = (r.x0 + r.x1) / 2;
-    image.fillRect(xm - s / 2, r.y1 + 1, xm - s / 2 + s, tickBottom, ink);
+    for (const ColorBarTick& t : p.ticks) {
+      const int left = std::clamp(t.x - s / 2, r.x0, r.x1 - s);
+      image.fillRect(left, r.y1 + 1, left + s, tickBottom, ink);
+      if (!t.box.empty()) drawText(image, t.box.x0, t.box.y0, t.text, s, ink);
+    }
+    // A clipped end: a triangle in the end colour pointing away from the bar, outlined.
+    const auto drawArrow = [&](const PixelRect& a, bool pointsLeft, Rgba8 fill) {
+      if (a.empty()) return;
+      const int h = a.height();
+      for (int col = 0; col < a.width(); ++col) {
+        const double reach = pointsLeft ? static_cast<double>(col + 1) / a.width()
+                                        : static_cast<double>(a.width() - col) / a.width();
+        const int half = static_cast<int>(std::lround(reach * h / 2.0));
+        const int mid = a.y0 + h / 2;
+        image.fillRect(a.x0 + col, mid - half, a.x0 + col + 1, mid + half, fill);
+        image.fillRect(a.x0 + col, mid - half - 1, a.x0 + col + 1, mid - half, ink);
+        image.fillRect(a.x0 + col, mid + half, a.x0 + col + 1, mid + half + 1, ink);
+      }
+    };
+    drawArrow(p.lowArrow, true, toRgba8(scale.map().at(0.0)));
+    drawArrow(p.highArrow, false, toRgba8(scale.map().at(1.0)));
     drawText(image, p.label.x0, p.label.y0, p.labelText, s, ink);
-    drawText(image, p.minLabel.x0, p.minLabel.y0, p.minText, s, ink);
-    drawText(image, p.maxLabel.x0, p.maxLabel.y0, p.maxText, s, ink);
-    if (!p.midLabel.empty()) drawText(image, p.midLabel.x0, p.midLabel.y0, p.midText, s, ink);
+  }
+  for (const LegendPlacement& e : layout.legend) {
+    const PixelRect& r = e.swatch;
+    image.fillRect(r.x0, r.y0, r.x1, r.y1, ink);  // a frame, then the colour inside it
+    image.fillRect(r.x0 + 1, r.y0 + 1, r.x1 - 1, r.y1 - 1, e.color);
+    drawText(image, e.label.x0, e.label.y0, e.text, s, ink);
   }
 }
 

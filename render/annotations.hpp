@@ -1,7 +1,8 @@
 #pragma once
 // The strip under the picture: on the left the title, the simulation time and a scale bar; on
-// the right one colour bar per coloured layer, with the field's name and units above it and
-// its minimum, middle and maximum values below. Drawn on the CPU with the built-in font.
+// the right one colour bar per coloured layer, with the field's name and units above it
+// ("(log)" for a log scale, a shared power of ten), round ticks below it (render/ticks.hpp),
+// and an arrow at each end the data run past (clipped values). Drawn on the CPU (render/font.hpp).
 #include <string>
 #include <vector>
 
@@ -22,12 +23,28 @@ struct PixelRect {
 struct ColorBarEntry {
   std::string label;  // "density [kg/m^3]"
   ColorScale scale;
+  // Data beyond the scale's ends (drawn in the end colour): an arrow marks each such end.
+  bool clippedLow = false, clippedHigh = false;
+};
+
+struct ColorBarTick {
+  int x = 0;        // the tick mark's column
+  PixelRect box;    // its label; empty when it would overlap a neighbour's
+  std::string text;
 };
 
 struct ColorBarPlacement {
   PixelRect bar;  // the gradient: first column = the map at 0, last column = the map at 1
-  PixelRect label, minLabel, midLabel, maxLabel;  // midLabel empty when it would not fit
-  std::string labelText, minText, midText, maxText;
+  PixelRect label;
+  std::string labelText;  // the entry's label, with "(log)" and the ticks' common factor
+  std::vector<ColorBarTick> ticks;
+  PixelRect lowArrow, highArrow;  // empty unless that end is clipped
+};
+
+struct LegendPlacement {
+  PixelRect swatch, label;
+  std::string text;
+  Rgba8 color;
 };
 
 struct StripLayout {
@@ -37,6 +54,7 @@ struct StripLayout {
   std::string titleText, timeText, scaleText;
   double scaleMetres = 0.0;  // the scale bar's length [m]
   std::vector<ColorBarPlacement> colorBars;
+  std::vector<LegendPlacement> legend;
 };
 
 // Pixel rows the strip needs (0 when it shows nothing).

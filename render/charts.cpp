@@ -70,7 +70,8 @@ std::string chartSpecJson(const ChartSpec& spec) {
     if (!s.csv.empty()) json += ", \"csv\": " + path(s.csv);
     json += std::string(", \"reference\": ") + boolean(s.reference);
     json += std::string(", \"markers\": ") + boolean(s.markers);
-    json += std::string(", \"points\": ") + boolean(s.points) + "}";
+    json += std::string(", \"points\": ") + boolean(s.points);
+    json += std::string(", \"negate\": ") + boolean(s.negate) + "}";
   }
   json += "\n  ],\n";
   json += std::string("  \"xlog\": ") + boolean(spec.xlog) + ",\n";
@@ -78,6 +79,13 @@ std::string chartSpecJson(const ChartSpec& spec) {
   json += "  \"xlabel\": " + jsonString(spec.xlabel) + ",\n";
   json += "  \"ylabel\": " + jsonString(spec.ylabel) + ",\n";
   json += "  \"title\": " + jsonString(spec.title) + ",\n";
+  json += "  \"hlines\": [";
+  for (std::size_t i = 0; i < spec.hlines.size(); ++i)
+    json += (i ? ", " : "") + std::string("{\"y\": ") + jsonNumber(spec.hlines[i].y, 17) +
+            ", \"label\": " + jsonString(spec.hlines[i].label) + "}";
+  json += "],\n";
+  json += std::string("  \"equal_aspect\": ") + boolean(spec.equalAspect) + ",\n";
+  json += "  \"note\": " + jsonString(spec.note) + ",\n";
   json += "  \"out\": " + path(spec.out) + ",\n";
   json += "  \"width\": " + std::to_string(spec.width) + ",\n";
   json += "  \"height\": " + std::to_string(spec.height) + "\n}\n";

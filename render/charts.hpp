@@ -25,6 +25,13 @@ struct ChartSeries {
   bool reference = false;       // an exact or reference curve: dashed black
   bool markers = false;         // points joined by lines, in order of x
   bool points = false;          // small dots, no line: every particle of a profile
+  bool negate = false;          // plot -y: a depth drawn downward below a surface at 0
+};
+
+// A horizontal line across a line chart: the pre-impact surface, a limit.
+struct ChartLine {
+  double y = 0.0;
+  std::string label{};
 };
 
 struct ChartSpec {
@@ -33,7 +40,12 @@ struct ChartSpec {
   std::string x{};  // x column; Bar: the column of category names
   std::vector<ChartSeries> series{};
   bool xlog = false, ylog = false;
-  std::string xlabel{}, ylabel{}, title{};  // labels with units, e.g. "t [s]"
+  std::string xlabel{}, ylabel{}, title{};  // labels with units, e.g. "t [s]"; an x label in
+                                            // [s] is shown in ms or us when the times are short
+  std::vector<ChartLine> hlines{};          // dashed grey lines
+  bool equalAspect = false;                 // one metre the same length on both axes
+  std::string note{};                       // a line of text in the middle of the axes: "no
+                                            // coating needed" where the bars are all zero
   std::filesystem::path out{};              // the PNG
   int width = 900, height = 600;            // pixels
 };

@@ -23,7 +23,11 @@ A "ble" spec draws ballistic-limit curves of Whipple shields from the long-forma
 one line per wall_thickness_m (speed in km/s, critical diameter in mm), the regime boundaries
 found in the regime column as dotted lines, and the threat, if given, as a marker. The column
 names may be changed with "group", "x", "y" and "regime".
-A series may name its own csv and x column. "reference": a dashed black line (an exact
+A series may name its own csv and x column; "negate": plot -y (a depth downward). The spec may add
+"hlines" ([{"y": 0, "label": "pre-impact surface"}], dashed grey), "equal_aspect" (one metre
+the same length on both axes) and "note" (a line of text in the middle of the axes, e.g. "no
+coating needed" over all-zero bars). An x label ending in "[s]" is shown in ms or us (the
+values scaled) when every time is below 2 s or 2 ms. "reference": a dashed black line (an exact
 solution). "markers": points joined by lines (a convergence study). "points": small dots, no
 line (every particle of a profile). For "bar" charts the x column
 holds the category names and each series is one bar per category.
@@ -90,6 +94,19 @@ class Tables:
         return values
 
 
+def time_axis(spec, xs):
+    """The factor and label for an x axis of times: "[s]" becomes "[ms]" or "[us]" when short."""
+    label = spec.get("xlabel") or ""
+    if not label.endswith("[s]") or spec.get("xlog"):
+        return 1.0, label
+    span = max((abs(v) for v in xs if v == v), default=0.0)
+    if 0 < span < 2e-3:
+        return 1e6, label[:-3] + "[\u00b5s]"
+    if 0 < span < 2.0:
+        return 1e3, label[:-3] + "[ms]"
+    return 1.0, label
+
+
 def draw(spec, base):
     import matplotlib
     matplotlib.use("Agg")
@@ -113,7 +130,17 @@ def draw(spec, base):
     tables = Tables(base)
     dpi = 100
     figure, axes = plt.subplots(figsize=(width / dpi, height / dpi), dpi=dpi)
+    xfactor, xlabel = 1.0, spec.get("xlabel") or spec.get("x", "")
     if kind == "line":
+        every_x = []
+        for entry in series:
+            path = entry.get("csv") or spec.get("csv")
+            xname = entry.get("x") or spec.get("x")
+            if xname and "y" in entry:
+                every_x += tables.column(path, xname)
+        xfactor, xlabel = time_axis(spec, every_x)
+        if xfactor == 1.0:
+            xlabel = spec.get("xlabel") or spec.get("x", "")
         for entry in series:
             if "y" not in entry:
                 fail("a series has no 'y' column")
@@ -121,8 +148,10 @@ def draw(spec, base):
             xname = entry.get("x") or spec.get("x")
             if not xname:
                 fail("no 'x' column for series '%s'" % entry["y"])
-            x = tables.column(path, xname)
+            x = [v * xfactor for v in tables.column(path, xname)]
             y = tables.column(path, entry["y"])
+            if entry.get("negate"):
+                y = [-v for v in y]
             label = entry.get("label") or entry["y"]
             if entry.get("reference"):
                 axes.plot(x, y, "k--", linewidth=1.5, label=label, zorder=3)
@@ -163,12 +192,21 @@ def draw(spec, base):
         axes.set_xscale("log")
     if spec.get("ylog"):
         axes.set_yscale("log")
-    axes.set_xlabel(spec.get("xlabel") or spec.get("x", ""))
+    for line in spec.get("hlines") or []:
+        axes.axhline(float(line.get("y", 0.0)), color="0.45", linestyle="--", linewidth=1.2,
+                     label=line.get("label") or None, zorder=1)
+    if spec.get("equal_aspect") and kind == "line":
+        axes.set_aspect("equal", adjustable="datalim")
+    if spec.get("note"):
+        axes.text(0.5, 0.5, spec["note"], transform=axes.transAxes, ha="center", va="center",
+                  fontsize=14, color="0.25",
+                  bbox={"boxstyle": "round", "facecolor": "white", "edgecolor": "0.6"})
+    axes.set_xlabel(xlabel)
     axes.set_ylabel(spec.get("ylabel", ""))
     if spec.get("title"):
         axes.set_title(spec["title"])
     axes.grid(True, which="major", alpha=0.3)
-    if len(series) > 1 or any(entry.get("label") for entry in series):
+    if len(series) > 1 or any(entry.get("label") for entry in series) or spec.get("hlines"):
         axes.legend()
     figure.tight_layout()
     save_figure(figure, out, base, dpi)

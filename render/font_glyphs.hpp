@@ -1,5 +1,5 @@
 #pragma once
-// The bitmap tables of the built-in font (font_glyphs.cpp), for font.cpp.
+// The bitmap tables of the built-in font (font_glyphs.cpp), for bitmap_font.cpp.
 #include <array>
 #include <cstdint>
 

@@ -77,7 +77,7 @@ void ParticlePass::draw(const ParticleLayer& layer, const ColorScale* scale, con
     positionData_[3 * k] = static_cast<float>(layer.x[k] - o[0]);
     positionData_[3 * k + 1] = static_cast<float>(layer.y[k] - o[1]);
     positionData_[3 * k + 2] = static_cast<float>((hasZ ? layer.z[k] : 0.0) - o[2]);
-    radiusData_[k] = static_cast<float>(std::abs(layer.radiusInH * layer.h[k]));
+    radiusData_[k] = static_cast<float>(layer.discRadius(k));
     if (scale) {
       const Rgb c = scale->color(layer.values[k]);
       colorData_[4 * k] = byte(c.r);

@@ -1,11 +1,13 @@
 #include "render/renderer.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <optional>
 #include <stdexcept>
 #include <string>
 
+#include "render/distance_axes.hpp"
 #include "render/gl_context.hpp"
 #include "render/labels.hpp"
 #include "render/passes.hpp"
@@ -30,6 +32,20 @@ std::optional<ColorScale> scaleOf(std::span<const double> values, const ColorSca
 
 std::string barLabel(const std::string& field, const std::string& units) {
   return fieldLabel(field.empty() ? "value" : field, units);
+}
+
+// The colour bar of a layer: its label, scale, and whether any finite value lies beyond either
+// end (a log scale's non-positive values lie below it).
+ColorBarEntry barOf(const std::string& field, const std::string& units, const ColorScale& scale,
+                    std::span<const double> values) {
+  ColorBarEntry entry{barLabel(field, units), scale};
+  const double tolerance = 1e-9 * (std::abs(scale.min()) + std::abs(scale.max()));
+  for (const double v : values) {
+    if (!std::isfinite(v)) continue;
+    if (v < scale.min() - tolerance) entry.clippedLow = true;
+    if (v > scale.max() + tolerance) entry.clippedHigh = true;
+  }
+  return entry;
 }
 
 }  // namespace
@@ -61,18 +77,19 @@ Frame Renderer::render(const Picture& scene, const View& view) {
   for (const SliceLayer& s : scene.slices) {
     sliceScales.push_back(resolveScale(s.scale, s.values));
     if (bars && s.colorBar)
-      frame.colorBars.push_back({barLabel(s.field, s.units), *sliceScales.back()});
+      frame.colorBars.push_back(barOf(s.field, s.units, *sliceScales.back(), s.values));
   }
   for (const MeshLayer& m : scene.meshes) {
     meshScales.push_back(
         scaleOf(m.triangleValues.empty() ? m.vertexValues : m.triangleValues, m.scale));
     if (bars && m.colorBar && meshScales.back())
-      frame.colorBars.push_back({barLabel(m.field, m.units), *meshScales.back()});
+      frame.colorBars.push_back(barOf(m.field, m.units, *meshScales.back(),
+                                      m.triangleValues.empty() ? m.vertexValues : m.triangleValues));
   }
   for (const ParticleLayer& p : scene.particles) {
     particleScales.push_back(scaleOf(p.values, p.scale));
     if (bars && p.colorBar && particleScales.back())
-      frame.colorBars.push_back({barLabel(p.field, p.units), *particleScales.back()});
+      frame.colorBars.push_back(barOf(p.field, p.units, *particleScales.back(), p.values));
   }
 
   const int textScale =
@@ -124,6 +141,10 @@ Frame Renderer::render(const Picture& scene, const View& view) {
 
   frame.image = Image(width, height);
   std::memcpy(frame.image.bytes().data(), context.pixels().data(), context.pixels().size());
+  if (scene.annotations.axes)
+    drawDistanceAxes(frame.image, frame.framing,
+                     {scene.annotations.axisNames[0], scene.annotations.axisNames[1]}, textScale,
+                     toRgba8(settings_.ink.value_or(contrastingInk(bg))));
   if (strip > 0) {
     frame.strip = layoutStrip(scene.annotations, frame.colorBars, width, plotHeight, textScale,
                               frame.framing.pixelsPerMetre);

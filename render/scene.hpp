@@ -3,6 +3,7 @@
 // from where (a View). The renderer reads the arrays during Renderer::render only: the spans
 // must stay valid for that call, no longer.
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -27,9 +28,12 @@ struct ParticleLayer {
   std::span<const double> values{};  // the field to colour by, one per particle; empty: `color`
   ColorScaleSpec scale{};
   Rgb color{0.6f, 0.6f, 0.6f};
-  // Disc radius in smoothing lengths: 0.5 gives a disc of diameter h, which at the usual
-  // h = 1.2 spacing just closes the gaps between neighbours.
+  // Disc radius in smoothing lengths (when `radius` is empty): 0.5 gives a disc of diameter h.
   double radiusInH = 0.5;
+  // Disc radii [m], one per particle (coupling/ sizes them to each particle's own spacing, so
+  // neighbours' discs close the gaps of a lattice: no moire); empty: radiusInH * h.
+  std::span<const double> radius{};
+  double discRadius(std::size_t k) const { return std::abs(radius.empty() ? radiusInH * h[k] : radius[k]); }
   ParticleStyle style = ParticleStyle::Shaded;
   // The colour bar: shown when `values` is not empty and `colorBar` is set.
   std::string field{}, units{};
@@ -103,6 +107,12 @@ struct View {
   std::vector<ClipPlane> clipPlanes{};
 };
 
+// One category of a categorical picture (a material, a failure state) in the strip's legend.
+struct LegendEntry {
+  std::string label;
+  Rgb color;
+};
+
 // The strip of text and bars under the picture. Shown when anything in it is asked for.
 struct Annotations {
   std::string title{};
@@ -110,6 +120,12 @@ struct Annotations {
   bool scaleBar = true;          // a round length about 1/5 of the view (Perspective: at the
                                  // target's distance)
   bool colorBars = true;         // one per layer that asks for it
+  // Swatches with their names, three to a row, right of the title (below any colour bars).
+  std::vector<LegendEntry> legend{};
+  // Distance axes along the plot's bottom and left edges (plane and RZ views;
+  // render/distance_axes.hpp), named axisNames[0] and [1] ("x", "y"; RZ "r", "z").
+  bool axes = false;
+  std::array<std::string, 2> axisNames{"x", "y"};
 };
 
 // What one image draws: its layers and the strip under it. (Not a scene file: that is

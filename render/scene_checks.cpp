@@ -27,6 +27,8 @@ void validatePicture(const Picture& scene, const View& view) {
     if (!p.values.empty() && p.values.size() != n)
       fail("particle", l, count(n, "x") + " but " + count(p.values.size(), "values"));
     if (!(p.radiusInH > 0.0)) fail("particle", l, "radiusInH must be > 0");
+    if (!p.radius.empty() && p.radius.size() != n)
+      fail("particle", l, count(n, "x") + " but " + count(p.radius.size(), "radii (give n or none)"));
   }
   for (std::size_t l = 0; l < scene.meshes.size(); ++l) {
     const MeshLayer& m = scene.meshes[l];

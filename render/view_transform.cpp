@@ -86,7 +86,7 @@ Bounds particleBounds(const ParticleLayer& layer) {
     const auto k = static_cast<std::size_t>(i);
     const double x = layer.x[k], y = layer.y[k], z = hasZ ? layer.z[k] : 0.0;
     if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) continue;
-    const double r = std::abs(layer.radiusInH * layer.h[k]);
+    const double r = layer.discRadius(k);
     lo0 = std::min(lo0, x - r);
     lo1 = std::min(lo1, y - r);
     lo2 = std::min(lo2, z - r);
@@ -110,7 +110,7 @@ double particleReach(const ParticleLayer& layer, const Vec3& c, bool mirror) {
 #pragma omp parallel for schedule(static) reduction(max : reach2)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    const double r = std::abs(layer.radiusInH * layer.h[k]);
+    const double r = layer.discRadius(k);
     const double dy = layer.y[k] - c[1], dz = (hasZ ? layer.z[k] : 0.0) - c[2];
     for (double x : {layer.x[k], mirror ? -layer.x[k] : layer.x[k]}) {
       const double dx = x - c[0];

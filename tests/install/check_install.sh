@@ -26,10 +26,12 @@ scenes=$("$prefix/bin/ejecta" scenes)
 grep -q "^impact_rz " <<< "$scenes" || { echo "ejecta scenes lacks impact_rz"; exit 1; }
 "$prefix/bin/ejecta" run sod_1d --set "time.t_end=0.01 s" --out "$work/run" --quiet --no-charts --threads 1
 test -f "$work/run/summary.json"
-if ldd "$prefix/bin/ejecta" | grep -q "$build"; then echo "the installed binary links the build tree"; exit 1; fi
+# (Outputs captured first: grep -q closing a pipe early would fail the pipeline under pipefail.)
+libraries=$(ldd "$prefix/bin/ejecta")
+if grep -q "$build" <<< "$libraries"; then echo "the installed binary links the build tree"; exit 1; fi
 
 man_page=$prefix/share/man/man1/ejecta.1
-grep -q '^\.SH COMMANDS' "$man_page" && grep -q 'ejecta run' "$man_page"
+grep -q '^\.SH COMMANDS' "$man_page" && grep -q 'ejecta run' "$man_page" || { echo "$man_page lacks its commands"; exit 1; }
 if command -v groff > /dev/null; then
   warnings=$(groff -man -Tutf8 -ww -z "$man_page" 2>&1 || true)
   [ -z "$warnings" ] || { echo "groff: $warnings"; exit 1; }
@@ -53,7 +55,8 @@ test -f "$prefix/share/doc/ejecta/README.md"
 if command -v cpack > /dev/null && command -v dpkg-deb > /dev/null; then
   cpack -G DEB -B "$work/deb" --config "$build/CPackConfig.cmake" > "$work/cpack.log" || { cat "$work/cpack.log"; exit 1; }
   deb=$(ls "$work"/deb/ejecta_*.deb)
-  dpkg-deb -I "$deb" | grep -q "Depends: .*libhdf5" || { dpkg-deb -I "$deb"; echo "the package lists no library dependencies"; exit 1; }
+  control=$(dpkg-deb -I "$deb")
+  grep -q "Depends: .*libhdf5" <<< "$control" || { echo "$control"; echo "the package lists no library dependencies"; exit 1; }
   dpkg-deb -x "$deb" "$work/unpacked"
   "$work/unpacked/usr/bin/ejecta" scenes --kind study > /dev/null
   echo "package: $(basename "$deb") ($(du -k "$deb" | cut -f1) kB)"

@@ -261,9 +261,12 @@ TEST(RenderParticles, ColourBarEndsAreTheMapsEndColours) {
   EXPECT_EQ(f.image.at(bar.bar.x0, row), kViridis0);
   EXPECT_EQ(f.image.at(bar.bar.x1 - 1, row), kViridis255);
   EXPECT_EQ(bar.labelText, "density [kg/m^3]");
-  EXPECT_EQ(bar.minText, "2");
-  EXPECT_EQ(bar.maxText, "7");
-  EXPECT_EQ(bar.midText, "4.5");
+  // Round ticks of the range 2 .. 7 (step 1), every one labelled at this width.
+  std::vector<std::string> texts;
+  for (const ColorBarTick& t : bar.ticks) texts.push_back(t.text);
+  EXPECT_EQ(texts, (std::vector<std::string>{"2", "3", "4", "5", "6", "7"}));
+  EXPECT_EQ(bar.ticks.front().x, bar.bar.x0);
+  EXPECT_EQ(bar.ticks.back().x, bar.bar.x1 - 1);
   // The strip is under the picture and the picture keeps its framing above it.
   EXPECT_EQ(f.strip.top, f.framing.plotHeight);
   EXPECT_EQ(f.strip.top + f.strip.height, 300);
@@ -324,6 +327,43 @@ TEST(RenderParticles, RejectsInconsistentLayers) {
     EXPECT_NE(std::string(e.what()).find("particle layer 0"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("1 h"), std::string::npos) << e.what();
   }
+}
+
+}  // namespace
+}  // namespace ejecta::render
+
+namespace ejecta::render {
+namespace {
+
+TEST(RenderParticles, DistanceAxesTickRoundLengthsAtTheirPixels) {
+  // Two particles 10 m apart: a plane view about 10 m wide, ticks every 2 m along the bottom
+  // and the left edges, each mark at the pixel its length projects to.
+  Renderer& r = renderer();
+  r.setSettings(size(400, 400));
+  Particles p{{0.0, 10.0}, {0.0, 10.0}, {}, {0.2, 0.2}, {}};
+  Picture scene;
+  scene.particles.push_back(p.layer());
+  scene.annotations.axes = true;
+  scene.annotations.scaleBar = false;
+  const Frame f = r.render(scene, View{});
+  const Rgba8 ink{0, 0, 0, 255};
+  for (const double metres : {2.0, 4.0, 6.0, 8.0}) {
+    const auto at = f.framing.project({metres, 0.0, 0.0});
+    const int column = static_cast<int>(std::lround(at[0]));
+    int marked = 0;
+    for (int dx = -1; dx <= 1; ++dx) marked += f.image.at(column + dx, f.framing.plotHeight - 2) == ink;
+    EXPECT_GT(marked, 0) << metres << " m at column " << column;
+    const auto up = f.framing.project({0.0, metres, 0.0});
+    const int row = static_cast<int>(std::lround(up[1]));
+    marked = 0;
+    for (int dy = -1; dy <= 1; ++dy) marked += f.image.at(1, row + dy) == ink;
+    EXPECT_GT(marked, 0) << metres << " m at row " << row;
+  }
+  // Off by default: the bottom row between ticks and under them is background.
+  scene.annotations.axes = false;
+  const Frame plain = r.render(scene, View{});
+  const int column = static_cast<int>(std::lround(plain.framing.project({4.0, 0.0, 0.0})[0]));
+  EXPECT_NE(plain.image.at(column, plain.framing.plotHeight - 2), ink);
 }
 
 }  // namespace

@@ -1,3 +1,5 @@
+// The built-in 5 x 7 bitmap font: the fallback when the outline font is missing
+// (render/font.hpp), and the UTF-8 decoder both use.
 #include "render/font.hpp"
 
 #include <algorithm>
@@ -59,6 +61,8 @@ std::u32string decodeUtf8(std::string_view utf8) {
   return out;
 }
 
+namespace bitmap {
+
 int textWidth(std::string_view utf8, int scale) {
   const auto count = static_cast<int>(decodeUtf8(utf8).size());
   return count == 0 ? 0 : (count * kGlyphAdvance - 1) * scale;
@@ -76,5 +80,7 @@ void drawText(Image& image, int x, int y, std::string_view utf8, int scale, Rgba
     penX += kGlyphAdvance * scale;
   }
 }
+
+}  // namespace bitmap
 
 }  // namespace ejecta::render

@@ -1,0 +1,87 @@
+#include "render/ticks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "render/labels.hpp"
+
+namespace ejecta::render {
+
+double niceStep(double span, int target) {
+  const double raw = span / std::max(1, target);
+  const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+  double best = decade;
+  for (const double m : {1.0, 2.0, 5.0, 10.0})
+    if (std::abs(std::log(m * decade / raw)) < std::abs(std::log(best / raw))) best = m * decade;
+  return best;
+}
+
+namespace {
+
+// The text of v at a tick step: plain decimals with as many places as the step needs while the
+// number is readable that way (0.01 .. 9999), an exponent beyond.
+std::string tickText(double v, double step) {
+  if (std::abs(v) < step * 1e-9) return "0";
+  const double magnitude = std::abs(v);
+  if (magnitude >= 1e-2 && magnitude < 1e4) {
+    const int places = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*f", places, v);
+    return text;
+  }
+  const int digits = std::clamp(static_cast<int>(std::floor(std::log10(magnitude))) -
+                                    static_cast<int>(std::floor(std::log10(step))) + 1,
+                                1, 6);
+  return formatNumber(v, digits);
+}
+
+TickSet linearTicks(const ColorScale& scale, int target) {
+  TickSet out;
+  const double lo = scale.min(), hi = scale.max();
+  const double step = niceStep(hi - lo, target);
+  // One power of ten for all labels when they would need an exponent (|v| >= 1e4 or < 1e-2).
+  const double largest = std::max(std::abs(lo), std::abs(hi));
+  const int exponent = static_cast<int>(std::floor(std::log10(largest) / 3.0)) * 3;
+  const bool factor = exponent != 0 && (largest >= 1e4 || largest < 1e-2);
+  const double unit = factor ? std::pow(10.0, exponent) : 1.0;
+  if (factor) out.factor = "\xC3\x97" "1e" + std::to_string(exponent);  // ×1e9
+  for (double k = std::ceil(lo / step - 1e-9); k * step <= hi * (1 + 1e-12) + step * 1e-9; k += 1.0) {
+    const double v = k * step;
+    out.ticks.push_back({v, scale.normalise(v), tickText(v / unit, step / unit)});
+  }
+  return out;
+}
+
+TickSet logTicks(const ColorScale& scale) {
+  TickSet out;
+  const double lo = std::log10(scale.min()), hi = std::log10(scale.max());
+  const bool fine = hi - lo < 2.0;
+  const int step = hi - lo > 12 ? 3 : hi - lo > 6 ? 2 : 1;  // at most ~6 decade labels
+  for (int d = static_cast<int>(std::floor(lo)); d <= static_cast<int>(std::ceil(hi)); ++d) {
+    for (const double m : fine ? std::vector<double>{1, 2, 5} : std::vector<double>{1}) {
+      if (m == 1 && d % step != 0 && !fine) continue;
+      const double v = m * std::pow(10.0, d);
+      const double lv = std::log10(v);
+      if (lv < lo - 1e-9 || lv > hi + 1e-9) continue;
+      out.ticks.push_back({v, scale.normalise(v), tickText(v, v)});
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+TickSet colorBarTicks(const ColorScale& scale, int target) {
+  TickSet set = scale.kind() == ScaleKind::Log ? logTicks(scale) : linearTicks(scale, target);
+  // A range narrower than one step still gets its two ends marked.
+  if (set.ticks.size() < 2) {
+    set = TickSet{};
+    const double span = scale.kind() == ScaleKind::Log ? scale.max() - scale.min() : scale.max() - scale.min();
+    for (const double v : {scale.min(), scale.max()})
+      set.ticks.push_back({v, scale.normalise(v), formatNumber(v, span > 0 && std::abs(v) / span > 100 ? 6 : 3)});
+  }
+  return set;
+}
+
+}  // namespace ejecta::render
