@@ -117,7 +117,7 @@ void writeThermalPicture(render::Renderer& renderer, const ParticleSet& particle
   body.scale.min = *coolest;
   body.scale.max = *hottest > *coolest ? *hottest : *coolest + 1.0;
   body.shaded = !planar;
-  body.field = "face steady temperature (eq. 4.8)";
+  body.field = "faces, eq. 4.8";
   body.units = "K";
   body.colorBar = true;
 

@@ -61,7 +61,8 @@ void drawDistanceAxes(Image& image, const Framing& f, const AxisNames& names, in
         image.fillRect(0, p - s / 2, tick, p - s / 2 + s, ink);
         const int y = std::clamp(p - textHeight(s) / 2, 0, f.plotHeight - textHeight(s));
         // The top line holds the axis's name.
-        if (y >= 2 * gap + textHeight(s)) drawText(image, tick + gap, y, text, s, ink);
+        // (Well clear of the mark, which would otherwise read as a minus sign.)
+        if (y >= 2 * gap + textHeight(s)) drawText(image, tick + 3 * gap, y, text, s, ink);
       }
     }
   }
