@@ -41,7 +41,8 @@ verification: build
 # time steps), particles to grids and VDB files (3D and
 # RZ revolved), the impact scene's solid-mechanics overhead, ray-cast view factors, the thermal
 # chain with and without the asteroid as occluder, the wall solvers, and off-screen rendering;
-# throughput per core at 1 and 2 threads where it scales; what the snapshots' checksums cost.
+# throughput per core at 1 and 2 threads where it scales; what the snapshots' checksums cost;
+# the memory a run takes per particle (against the memory check's constant).
 bench: build
 	$(BUILD)/bench/ejecta_bench_sedov --n 40
 	$(BUILD)/bench/ejecta_bench_time_steps --problem sedov_2d --set "bodies[0].spacing=0.01" --set "energy_deposits[0].width=0.02"
@@ -53,6 +54,7 @@ bench: build
 	$(BUILD)/bench/ejecta_bench_wall_heat --threads-sweep
 	$(BUILD)/bench/ejecta_bench_render --threads-sweep
 	$(BUILD)/bench/ejecta_bench_snapshot_io --particles 1000000 --repeats 3
+	$(BUILD)/bench/ejecta_bench_memory
 
 # Checked builds (docs/robustness.md), each in a folder of its own:
 #   make sanitize  the unit tests built with AddressSanitizer + UndefinedBehaviorSanitizer (gcc);

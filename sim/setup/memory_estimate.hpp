@@ -11,9 +11,9 @@ struct RunMemoryEstimate {
 };
 
 // Bytes per particle of a run, measured as the slope of peak resident memory against particle
-// count (ejecta 0.1, `/usr/bin/time -v`, two spacings each): 1.15 kB for the 3D Sedov (hydro),
-// 1.62 kB for the 3D oblique impact (strength, damage, two materials). 2 kB covers both with the
-// ghosts of walls and mirrors.
+// count (bench/memory.cpp, `ejecta_bench_memory`, two spacings each): 1.16 kB for the 3D Sedov
+// (hydro), 1.28 kB for the 3D oblique impact over 20 us (strength, damage, three materials;
+// 1.62 kB by hand over longer runs). 2 kB covers both with the ghosts of walls and mirrors.
 inline constexpr double kBytesPerParticle = 2048.0;
 
 RunMemoryEstimate estimateRunMemory(const Scene& scene);
