@@ -77,8 +77,9 @@ struct HookResults {
 
 void printSummary(const RunOutcome& r, const HookResults& hooks, const std::string& outDir) {
   const RunSummary& s = r.summary;
-  std::printf("ejecta: %s %s: %zu particles, %ld steps to t = %.6g s in %.2f s wall (%.2f s with "
-              "set-up and outputs; %d threads)\n",
+  // wall_seconds sums every invocation of a restarted run; total_wall_seconds is this command's.
+  std::printf("ejecta: %s %s: %zu particles, %ld steps to t = %.6g s in %.2f s wall (this command: "
+              "%.2f s with set-up and outputs; %d threads)\n",
               s.scene.c_str(), !r.ok ? "FAILED" : r.interrupted ? "INTERRUPTED" : "completed", s.particles, s.steps, s.tEnd,
               s.wallSeconds, s.totalWallSeconds, s.threads);
   if (std::isfinite(s.energy.relativeError))

@@ -81,7 +81,10 @@ Measure run(const std::string& ejecta, const std::string& scene, const std::vect
   }
   int status = 0;
   rusage usage{};
-  wait4(pid, &status, 0, &usage);
+  if (wait4(pid, &status, 0, &usage) != pid) {
+    std::fprintf(stderr, "ejecta_bench_memory: lost the run at spacing %g\n", spacing);
+    std::exit(2);
+  }
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     std::fprintf(stderr, "ejecta_bench_memory: the run at spacing %g failed (status %d); its summary: %s\n",
                  spacing, WIFEXITED(status) ? WEXITSTATUS(status) : -1, (out / "summary.json").c_str());
@@ -119,6 +122,11 @@ int main(int argc, char** argv) {
   const Measure coarse = run(ejecta, scene, bodies, spacings[0], sets, dir / "coarse");
   const Measure fine = run(ejecta, scene, bodies, spacings[1], sets, dir / "fine");
   fs::remove_all(dir);
+  if (fine.particles <= coarse.particles) {
+    std::fprintf(stderr, "ejecta_bench_memory: the finer spacing gave no more particles (%ld, %ld)\n",
+                 coarse.particles, fine.particles);
+    return 2;
+  }
   const double slope = (fine.peakBytes - coarse.peakBytes) / static_cast<double>(fine.particles - coarse.particles);
   if (json) {
     std::printf("{\"scene\": \"%s\", \"particles\": [%ld, %ld], \"peak_bytes\": [%.0f, %.0f], "

@@ -69,7 +69,8 @@ function(ejecta_install)
   set(CPACK_DEBIAN_PACKAGE_SECTION science)
   set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
   # The Python reader's dependencies, and the headers' (consumers compile against toml++).
-  set(CPACK_DEBIAN_PACKAGE_DEPENDS "python3-numpy, python3-h5py, libtomlplusplus-dev")
+  # The font is read at run time from its Debian path (render/outline_font.cpp).
+  set(CPACK_DEBIAN_PACKAGE_DEPENDS "python3-numpy, python3-h5py, libtomlplusplus-dev, fonts-dejavu-core")
   set(CPACK_DEBIAN_PACKAGE_SUGGESTS "python3-openvdb, python3-matplotlib, paraview")
   include(CPack)
 endfunction()

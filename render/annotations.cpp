@@ -11,6 +11,9 @@ namespace ejecta::render {
 
 namespace {
 
+// std::clamp with bounds that may cross (a label wider than its room): the low bound wins.
+int clampTo(int v, int lo, int hi) { return std::max(lo, std::min(v, hi)); }
+
 // Sizes in font pixels (multiplied by the text scale).
 constexpr int kPad = 6;         // around the strip's content
 constexpr int kLineGap = 4;     // between lines of the left column
@@ -111,7 +114,7 @@ StripLayout layoutStrip(const Annotations& a, const std::vector<ColorBarEntry>& 
         placed.x = x0 + static_cast<int>(std::lround(t.position * (x1 - x0 - 1)));
         placed.text = t.text;
         const int w = textWidth(t.text, s);
-        const int left = std::clamp(placed.x - w / 2, x0, x1 - w);
+        const int left = clampTo(placed.x - w / 2, x0, x1 - w);
         if (left > lastRight + 2 * s) {
           placed.box = textBox(left, ty, t.text, s);
           lastRight = placed.box.x1;
@@ -173,7 +176,7 @@ void drawStrip(Image& image, const StripLayout& layout, const std::vector<ColorB
     }
     const int tickBottom = r.y1 + 1 + kTick * s;
     for (const ColorBarTick& t : p.ticks) {
-      const int left = std::clamp(t.x - s / 2, r.x0, r.x1 - s);
+      const int left = clampTo(t.x - s / 2, r.x0, r.x1 - s);
       image.fillRect(left, r.y1 + 1, left + s, tickBottom, ink);
       if (!t.box.empty()) drawText(image, t.box.x0, t.box.y0, t.text, s, ink);
     }

@@ -11,6 +11,9 @@ namespace ejecta::render {
 
 namespace {
 
+// std::clamp with bounds that may cross (a label wider than its room): the low bound wins.
+int clampTo(int v, int lo, int hi) { return std::max(lo, std::min(v, hi)); }
+
 // World coordinate of a pixel column (axis 0) or row (axis 1) of an orthographic framing.
 struct AxisMap {
   double pixelAtZero = 0.0, pixelsPerMetre = 0.0;
@@ -55,11 +58,11 @@ void drawDistanceAxes(Image& image, const Framing& f, const AxisNames& names, in
       if (axis == 0) {  // along the bottom edge, labels above the marks
         image.fillRect(p - s / 2, f.plotHeight - tick, p - s / 2 + s, f.plotHeight, ink);
         const int w = textWidth(text, s);
-        const int x = std::clamp(p - w / 2, 0, f.plotWidth - w);
+        const int x = clampTo(p - w / 2, 0, f.plotWidth - w);
         drawText(image, x, f.plotHeight - tick - gap - textHeight(s), text, s, ink);
       } else {  // along the left edge, labels right of the marks
         image.fillRect(0, p - s / 2, tick, p - s / 2 + s, ink);
-        const int y = std::clamp(p - textHeight(s) / 2, 0, f.plotHeight - textHeight(s));
+        const int y = clampTo(p - textHeight(s) / 2, 0, f.plotHeight - textHeight(s));
         // The top line holds the axis's name.
         // (Well clear of the mark, which would otherwise read as a minus sign.)
         if (y >= 2 * gap + textHeight(s)) drawText(image, tick + 3 * gap, y, text, s, ink);

@@ -32,7 +32,7 @@ class OutlineFont {
     size(scale);
     long advance = 0;
     for (const char32_t c : decodeUtf8(utf8))
-      if (FT_Load_Char(face_, c, FT_LOAD_DEFAULT) == 0) advance += face_->glyph->advance.x;
+      if (FT_Load_Char(face_, c, FT_LOAD_NO_BITMAP) == 0) advance += face_->glyph->advance.x;
     return static_cast<int>((advance + 63) >> 6);
   }
 
@@ -48,9 +48,14 @@ class OutlineFont {
     const long baseline = y + ((face_->size->metrics.ascender + 63) >> 6);
     long pen = static_cast<long>(x) << 6;  // 26.6 fixed point: sub-pixel advances add up
     for (const char32_t c : decodeUtf8(utf8)) {
-      if (FT_Load_Char(face_, c, FT_LOAD_RENDER) != 0) continue;
+      // Outlines only (no embedded bitmaps), rendered as 8-bit coverage.
+      if (FT_Load_Char(face_, c, FT_LOAD_RENDER | FT_LOAD_NO_BITMAP) != 0) continue;
       const FT_GlyphSlot g = face_->glyph;
       const FT_Bitmap& b = g->bitmap;
+      if (b.pixel_mode != FT_PIXEL_MODE_GRAY || b.pitch < 0) {
+        pen += g->advance.x;
+        continue;
+      }
       const long left = (pen >> 6) + g->bitmap_left, top = baseline - g->bitmap_top;
       for (unsigned row = 0; row < b.rows; ++row)
         for (unsigned col = 0; col < b.width; ++col) {

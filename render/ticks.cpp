@@ -46,8 +46,13 @@ TickSet linearTicks(const ColorScale& scale, int target) {
   const bool factor = exponent != 0 && (largest >= 1e4 || largest < 1e-2);
   const double unit = factor ? std::pow(10.0, exponent) : 1.0;
   if (factor) out.factor = "\xC3\x97" "1e" + std::to_string(exponent);  // ×1e9
-  for (double k = std::ceil(lo / step - 1e-9); k * step <= hi * (1 + 1e-12) + step * 1e-9; k += 1.0) {
-    const double v = k * step;
+  // A range a few rounding steps wide (a nearly uniform field) has no round ticks to speak of:
+  // the caller marks its ends. So does one whose multiples of the step are past 2^53.
+  if (hi - lo < 1e-9 * largest) return out;
+  const double first = std::ceil(lo / step - 1e-9), last = std::floor(hi / step + 1e-9);
+  if (!(last - first < 50)) return out;
+  for (long k = 0; k <= static_cast<long>(last - first); ++k) {
+    const double v = (first + static_cast<double>(k)) * step;
     out.ticks.push_back({v, scale.normalise(v), tickText(v / unit, step / unit)});
   }
   return out;
@@ -57,7 +62,8 @@ TickSet logTicks(const ColorScale& scale) {
   TickSet out;
   const double lo = std::log10(scale.min()), hi = std::log10(scale.max());
   const bool fine = hi - lo < 2.0;
-  const int step = hi - lo > 12 ? 3 : hi - lo > 6 ? 2 : 1;  // at most ~6 decade labels
+  // At most about six decade labels, however wide the range.
+  const int step = std::max(1, static_cast<int>(std::ceil((hi - lo) / 6.0 - 1e-9)));
   for (int d = static_cast<int>(std::floor(lo)); d <= static_cast<int>(std::ceil(hi)); ++d) {
     for (const double m : fine ? std::vector<double>{1, 2, 5} : std::vector<double>{1}) {
       if (m == 1 && d % step != 0 && !fine) continue;
@@ -74,12 +80,14 @@ TickSet logTicks(const ColorScale& scale) {
 
 TickSet colorBarTicks(const ColorScale& scale, int target) {
   TickSet set = scale.kind() == ScaleKind::Log ? logTicks(scale) : linearTicks(scale, target);
-  // A range narrower than one step still gets its two ends marked.
+  // A range narrower than one step still gets its two ends marked, with the digits that tell
+  // them apart.
   if (set.ticks.size() < 2) {
     set = TickSet{};
-    const double span = scale.kind() == ScaleKind::Log ? scale.max() - scale.min() : scale.max() - scale.min();
-    for (const double v : {scale.min(), scale.max()})
-      set.ticks.push_back({v, scale.normalise(v), formatNumber(v, span > 0 && std::abs(v) / span > 100 ? 6 : 3)});
+    const double lo = scale.min(), hi = scale.max();
+    int digits = 3;
+    while (digits < 17 && formatNumber(lo, digits) == formatNumber(hi, digits)) ++digits;
+    for (const double v : {lo, hi}) set.ticks.push_back({v, scale.normalise(v), formatNumber(v, digits)});
   }
   return set;
 }

@@ -30,8 +30,10 @@ def main(run_dir, out_dir):
     last = series[-1]
     for material in last.materials:
         mine = last.select(material=material.name)
+        if not mine.any():
+            continue
         print("  %-12s %6d particles, %.4g kg, peak pressure %.4g %s" % (
-            material.name, mine.sum(), np.sum(last.mass[mine]), np.max(last.pressure[mine], initial=0.0),
+            material.name, mine.sum(), np.sum(last.mass[mine]), np.max(last.pressure[mine]),
             last.pressure.units))
     extras = summary.get("extras", {})
     if extras.get("crater_found"):

@@ -40,6 +40,8 @@ def plot_particles(snapshot, field="density", ax=None, log=False, cmap="viridis"
     keep = np.ones(len(values), dtype=bool) if mask is None else np.asarray(mask)
     x, y = position[keep, 0], position[keep, 1] if snapshot.dimension > 1 else np.zeros(keep.sum())
     values, h = values[keep], h[keep]
+    if not len(values):
+        raise ValueError("%s: no particles to draw (the mask selects none)" % snapshot.path)
     if mirror is None:
         mirror = snapshot.geometry == "rz"
     if mirror:
@@ -50,16 +52,17 @@ def plot_particles(snapshot, field="density", ax=None, log=False, cmap="viridis"
     pad = float(np.max(h)) if len(h) else 0.0
     ax.set_xlim(x.min() - pad, x.max() + pad)
     ax.set_ylim(y.min() - pad, y.max() + pad)
-    # Marker size in points^2 from the smoothing length in data units (half of h: the discs
-    # then just touch at the usual h = 1.2-1.5 spacing).
-    ax.figure.canvas.draw_idle()
-    width_points = ax.get_window_extent().width * 72.0 / ax.figure.dpi
-    points_per_metre = width_points / max(ax.get_xlim()[1] - ax.get_xlim()[0], 1e-300)
-    sizes = (points_per_metre * h) ** 2
-    drawn = ax.scatter(x, y, c=values, s=sizes, cmap=cmap, norm=norm, linewidths=0)
+    drawn = ax.scatter(x, y, c=values, s=1.0, cmap=cmap, norm=norm, linewidths=0)
     units = getattr(snapshot[field], "units", "1")
     bar = ax.figure.colorbar(drawn, ax=ax)
     bar.set_label("%s [%s]%s" % (field, units, " (log)" if log else ""))
+    # Marker areas in points^2 from the smoothing length in data units, once the colour bar
+    # and the equal aspect have set the axes' final size (a disc of diameter h).
+    ax.figure.canvas.draw()
+    box = ax.get_window_extent()
+    x0, x1 = ax.get_xlim()
+    points_per_metre = box.width * 72.0 / ax.figure.dpi / max(x1 - x0, 1e-300)
+    drawn.set_sizes((points_per_metre * h) ** 2)
     names = snapshot.coordinates
     ax.set_xlabel("%s [m]" % names[0])
     if len(names) > 1:

@@ -47,6 +47,8 @@ class Snapshot:
                 self._read_header(f)
         except OSError as error:
             raise EjectaFileError(self.path, "cannot open as HDF5 (%s)" % error) from None
+        except KeyError as error:  # a group without a dataset ejecta writes into it
+            raise EjectaFileError(self.path, "missing (%s)" % error, "/materials") from None
         self._cache = {}
 
     def _read_header(self, f):

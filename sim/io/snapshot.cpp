@@ -418,4 +418,24 @@ ParticleSet readSnapshot(const std::string& path, SnapshotInfo& info, SnapshotVa
   });
 }
 
+SnapshotLayout readSnapshotLayout(const std::string& path) {
+  try {
+    const QuietHdf5Errors quiet;
+    const Hid file = checked(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "cannot open as HDF5");
+    SnapshotLayout layout;
+    layout.xdmfVertices = linkExists(file.get(), "/xdmf/vertices");
+    const Hid group = openGroup(file.get(), "/particles");
+    H5G_info_t info;
+    check(H5Gget_info(group.get(), &info), "cannot list '/particles'");
+    for (hsize_t k = 0; k < info.nlinks; ++k) {
+      char name[256] = {};
+      if (H5Lget_name_by_idx(group.get(), ".", H5_INDEX_NAME, H5_ITER_INC, k, name, sizeof name, H5P_DEFAULT) > 0)
+        layout.particleDatasets.emplace_back(name);
+    }
+    return layout;
+  } catch (const std::exception& e) {
+    throw std::runtime_error("snapshot '" + path + "': " + e.what());
+  }
+}
+
 }  // namespace ejecta

@@ -81,4 +81,12 @@ ParticleSet readSnapshot(const std::string& path, SnapshotInfo& info, SnapshotVa
 // The snapshot's info (time, step, stored scene...) without its particles.
 SnapshotInfo readSnapshotInfo(const std::string& path);
 
+// What a snapshot file holds for its XDMF grid: the names of its /particles datasets and whether
+// it has the /xdmf/vertices connectivity (files written before either was added lack some).
+struct SnapshotLayout {
+  std::vector<std::string> particleDatasets;
+  bool xdmfVertices = false;
+};
+SnapshotLayout readSnapshotLayout(const std::string& path);
+
 }  // namespace ejecta

@@ -88,11 +88,14 @@ void writeGrid(std::ostream& out, const XdmfEntry& entry, std::size_t index) {
         << "\"/>\n";
   const int precision = xdmfVertexPrecision(entry.numParticles);
   out << "      <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n
-      << "\" NodesPerElement=\"1\">\n"
-      << "        <DataItem Dimensions=\"" << n << "\" NumberType=\"Int\" Precision=\"" << precision
-      << "\" Format=\"HDF\">" << file << ":/xdmf/vertices</DataItem>\n"
-      << "      </Topology>\n"
-      << "      <Geometry GeometryType=\"XYZ\">\n";
+      << "\" NodesPerElement=\"1\"";
+  if (entry.vertices)
+    out << ">\n        <DataItem Dimensions=\"" << n << "\" NumberType=\"Int\" Precision=\"" << precision
+        << "\" Format=\"HDF\">" << file << ":/xdmf/vertices</DataItem>\n"
+        << "      </Topology>\n";
+  else
+    out << "/>\n";  // an older snapshot: the legacy reader still draws it
+  out << "      <Geometry GeometryType=\"XYZ\">\n";
   writeDataItem(out, n + " 3", {"position", "m", 3, false, false, 8}, file, "        ");
   out << "      </Geometry>\n";
   for (const XdmfAttribute& spec : entry.attributes) writeAttribute(out, entry, spec, file);

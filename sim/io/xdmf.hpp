@@ -43,6 +43,7 @@ struct XdmfEntry {
   Geometry geometry = Geometry::Spatial;
   std::vector<XdmfAttribute> attributes;
   std::vector<std::string> materials;  // names by material id (the snapshot's /materials)
+  bool vertices = true;      // the snapshot has /xdmf/vertices (older files do not)
 };
 
 // Writes (atomically) one temporal collection of Polyvertex grids, one per entry, in the given

@@ -611,17 +611,26 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
   }
   const std::vector<std::string>& overrides = options.overrides;
   Scene scene = parseScene(options.sceneSource, files.back().string() + " (stored scene)", overrides);
-  if (!options.restartOverrides.empty() && !reached(info.time, scene.time.tEnd) &&
-      reached(info.time, info.nextOutputTime)) {
-    // A finished run's last snapshot is its final output: the extension's first output comes
-    // at the run's own cadence (the next multiple of the interval), or at the new end.
-    const double interval = scene.output.snapshotInterval;
-    info.nextOutputTime =
-        interval > 0 ? interval * (std::floor(info.time / interval * (1.0 + 1e-12)) + 1.0) : scene.time.tEnd;
+  bool extendsEnd = false, changesSteps = false;
+  for (const std::string& change : options.restartOverrides) {
+    extendsEnd = extendsEnd || keyOf(change) == "time.t_end";
+    changesSteps = changesSteps || keyOf(change) == "time.max_steps";
   }
-  if (!options.restartOverrides.empty() && scene.time.tEnd <= info.time * (1.0 + 1e-12))
+  if (extendsEnd && scene.time.tEnd <= info.time * (1.0 + 1e-12))
     throw SceneError("restart: time.t_end = " + std::to_string(scene.time.tEnd) + " s is not beyond the last "
                      "snapshot's t = " + std::to_string(info.time) + " s of " + runDir);
+  if (changesSteps && scene.time.maxSteps > 0 && scene.time.maxSteps <= info.step)
+    throw SceneError("restart: time.max_steps = " + std::to_string(scene.time.maxSteps) + " is not beyond the " +
+                     std::to_string(info.step) + " steps the run in " + runDir + " has taken");
+  if (extendsEnd && reached(info.time, info.nextOutputTime)) {
+    // A finished run's last snapshot is its final output: the extension's outputs keep the run's
+    // cadence, each time summed interval by interval as the time loop sums them, so the steps
+    // land where a straight run's land, to the bit.
+    const double interval = scene.output.snapshotInterval;
+    double next = interval > 0 ? interval : scene.time.tEnd;
+    while (interval > 0 && reached(info.time, next)) next += interval;
+    info.nextOutputTime = next;
+  }
   checkSnapshotMaterials(particles, scene.materials.size(), files.back().string());
   if (options.configure) options.configure(scene, options);
 
@@ -640,9 +649,16 @@ RunOutcome restartRun(const std::string& runDir, const RunOptions& baseOptions) 
       for (const auto& package : options.packages) package->registerFields(q);
     const double time = f == files.back() ? info.time : earlier.time;
     const ParticleSet& stored = f == files.back() ? particles : q;
+    // What the file itself holds: snapshots of older versions lack some datasets.
+    const SnapshotLayout layout = readSnapshotLayout(f.string());
+    std::vector<XdmfAttribute> attributes;
+    for (const XdmfAttribute& a : xdmfAttributes(stored))
+      if (std::find(layout.particleDatasets.begin(), layout.particleDatasets.end(), a.name) !=
+          layout.particleDatasets.end())
+        attributes.push_back(a);
     series.push_back({"snapshots/" + f.filename().string(), time,
                       f == files.back() ? storedParticles : stored.numReal, scene.geometry,
-                      xdmfAttributes(stored), materialNames(materialRecords(scene))});
+                      attributes, materialNames(materialRecords(scene)), layout.xdmfVertices});
   }
   outputs.setSeries(series);
   outputs.truncateEnergyLog(info.step);

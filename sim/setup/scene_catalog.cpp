@@ -94,10 +94,11 @@ const ShippedScene* findScene(const std::vector<ShippedScene>& scenes, std::stri
 SceneText readSceneArgument(const std::string& argument) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (fs::is_directory(argument, ec))
+  // A directory of that name (a run's --out) does not hide a shipped scene.
+  if (fs::is_directory(argument, ec) && !findShippedScene(argument))
     throw SceneError(argument + ": is a directory, not a scene file (to resume the run in it: "
                      "ejecta run --restart " + argument + ")");
-  if (fs::exists(argument, ec)) {
+  if (fs::exists(argument, ec) && !fs::is_directory(argument, ec)) {
     std::ifstream in(argument, std::ios::binary);
     if (!in) throw SceneError(argument + ": cannot open the scene file");
     std::ostringstream text;

@@ -10,8 +10,8 @@ namespace ejecta {
 
 struct ShippedScene {
   std::string name;         // path under scenes/ without ".toml": "impact_rz", "verification/sod_1d"
-  std::string kind;         // its first table: "scene" (ejecta run), "geometry" (ejecta
-                            // viewfactor) or "study" (ejecta thermal / ejecta whipple)
+  std::string kind;         // which of its tables it has, in this order: "scene" (ejecta run),
+                            // "geometry" (ejecta viewfactor) or "study" (ejecta thermal / whipple)
   std::string title;        // the table's `name` key
   std::string description;  // the table's `description` key (may be empty)
   std::string_view text;    // the whole file
@@ -36,7 +36,8 @@ struct SceneText {
   std::string label;  // the path, or "shipped scene 'impact_rz'" (names the source in errors)
 };
 
-// A path to an existing file wins; otherwise a shipped scene's name. Throws SceneError naming
+// A path to an existing file wins; otherwise a shipped scene's name (also over a directory of
+// that name, such as a run's --out). Throws SceneError naming
 // the argument and the reason ("no such file and no shipped scene ...", a directory, unreadable,
 // an ambiguous short name) with a pointer to `ejecta scenes`.
 SceneText readSceneArgument(const std::string& argument);

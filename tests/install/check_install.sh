@@ -28,7 +28,7 @@ grep -q "^impact_rz " <<< "$scenes" || { echo "ejecta scenes lacks impact_rz"; e
 test -f "$work/run/summary.json"
 # (Outputs captured first: grep -q closing a pipe early would fail the pipeline under pipefail.)
 libraries=$(ldd "$prefix/bin/ejecta")
-if grep -q "$build" <<< "$libraries"; then echo "the installed binary links the build tree"; exit 1; fi
+if grep -qF "$build" <<< "$libraries"; then echo "the installed binary links the build tree"; exit 1; fi
 
 man_page=$prefix/share/man/man1/ejecta.1
 grep -q '^\.SH COMMANDS' "$man_page" && grep -q 'ejecta run' "$man_page" || { echo "$man_page lacks its commands"; exit 1; }
@@ -54,7 +54,9 @@ test -f "$prefix/share/doc/ejecta/README.md"
 # that runs from the unpacked files.
 if command -v cpack > /dev/null && command -v dpkg-deb > /dev/null; then
   cpack -G DEB -B "$work/deb" --config "$build/CPackConfig.cmake" > "$work/cpack.log" || { cat "$work/cpack.log"; exit 1; }
-  deb=$(ls "$work"/deb/ejecta_*.deb)
+  debs=("$work"/deb/ejecta_*.deb)
+  [ ${#debs[@]} -eq 1 ] && [ -f "${debs[0]}" ] || { echo "cpack made ${#debs[@]} packages: ${debs[*]}"; exit 1; }
+  deb=${debs[0]}
   control=$(dpkg-deb -I "$deb")
   grep -q "Depends: .*libhdf5" <<< "$control" || { echo "$control"; echo "the package lists no library dependencies"; exit 1; }
   dpkg-deb -x "$deb" "$work/unpacked"

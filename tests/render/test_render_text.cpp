@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -238,6 +239,22 @@ TEST(RenderTicks, RoundStepsSharedFactorsAndDecades) {
   texts.clear();
   for (const Tick& t : log.ticks) texts.push_back(t.text);
   EXPECT_EQ(texts, (std::vector<std::string>{"500", "1000", "2000", "5000"}));
+}
+
+TEST(RenderTicks, DegenerateRangesEndQuicklyWithTheirEndsMarked) {
+  // A range a few rounding steps wide (a nearly uniform field): the two ends, told apart.
+  const double lo = 2700.0, hi = std::nextafter(std::nextafter(2700.0, 3000.0), 3000.0);
+  const TickSet few = colorBarTicks(ColorScale(ColorMap(ColorMapName::Viridis), lo, hi));
+  ASSERT_EQ(few.ticks.size(), 2u);
+  EXPECT_NE(few.ticks[0].text, few.ticks[1].text);
+  // Negative ranges keep the tick at their upper end.
+  const TickSet negative = colorBarTicks(ColorScale(ColorMap(ColorMapName::Viridis), -5e6, -1e6));
+  EXPECT_DOUBLE_EQ(negative.ticks.back().value, -1e6);
+  EXPECT_EQ(negative.factor, "\xC3\x97" "1e6");
+  // Sixty decades: about six labels, not sixty.
+  const TickSet wide = colorBarTicks(ColorScale(ColorMap(ColorMapName::Viridis), 1e-30, 1e30, ScaleKind::Log));
+  EXPECT_LE(wide.ticks.size(), 7u);
+  EXPECT_GE(wide.ticks.size(), 5u);
 }
 
 TEST(RenderText, ClippedEndsGetArrows) {

@@ -529,10 +529,10 @@ bool tagsBalance(const std::string& xml) {
 TEST_F(OutputFiles, XdmfSeriesHasOneGridPerSnapshot) {
   const std::vector<XdmfEntry> entries = {
       {"snapshots/snap_0000.h5", 0.0, 100, Geometry::Axisymmetric, xdmfAttributes(ParticleSet{}),
-       {"granite", "rubble"}},
+       {"granite", "rubble"}, true},
       {"snapshots/snap_0001.h5", 1.25e-6, 100, Geometry::Axisymmetric, xdmfAttributes(ParticleSet{}),
-       {"granite", "rubble"}},
-      {"snapshots/a&b.h5", 0.1, 98, Geometry::Axisymmetric, xdmfAttributes(ParticleSet{}), {"a<b"}},
+       {"granite", "rubble"}, true},
+      {"snapshots/a&b.h5", 0.1, 98, Geometry::Axisymmetric, xdmfAttributes(ParticleSet{}), {"a<b"}, false},
   };
   const std::string file = path("run.xdmf");
   writeXdmfSeries(file, entries);
@@ -564,6 +564,9 @@ TEST_F(OutputFiles, XdmfSeriesHasOneGridPerSnapshot) {
   EXPECT_NE(xml.find("<Information Name=\"units\" Value=\"kg/m^3\"/>"), std::string::npos);
   EXPECT_EQ(countOf(xml, "<Information Name=\"materials\" Value=\"0: granite, 1: rubble\"/>"), 2u);
   EXPECT_EQ(countOf(xml, "<Information Name=\"materials\" Value=\"0: a&lt;b\"/>"), 1u);
+  // The connectivity where the snapshot has it; an older snapshot's grid goes without.
+  EXPECT_EQ(countOf(xml, ":/xdmf/vertices</DataItem>"), 2u);
+  EXPECT_EQ(countOf(xml, "NumberOfElements=\"98\" NodesPerElement=\"1\"/>"), 1u);
 }
 
 TEST_F(OutputFiles, XdmfGivesTensorsAsMatricesWithNamedColumns) {
@@ -581,7 +584,7 @@ TEST_F(OutputFiles, XdmfGivesTensorsAsMatricesWithNamedColumns) {
             (std::vector<std::string>{"rr", "zz", "tt", "rz"}));
   EXPECT_EQ(xdmfComponentNames(*stress, Geometry::Planar),
             (std::vector<std::string>{"xx", "yy", "zz", "xy"}));
-  writeXdmfSeries(path("stress.xdmf"), {{"s.h5", 0.0, 7, Geometry::Axisymmetric, attributes, {}}});
+  writeXdmfSeries(path("stress.xdmf"), {{"s.h5", 0.0, 7, Geometry::Axisymmetric, attributes, {}, true}});
   const std::string xml = readText(path("stress.xdmf"));
   EXPECT_TRUE(tagsBalance(xml)) << xml;
   EXPECT_NE(xml.find("<Attribute Name=\"stress\" AttributeType=\"Matrix\""), std::string::npos) << xml;
@@ -606,6 +609,12 @@ TEST_F(OutputFiles, SnapshotsHoldTheXdmfVertexIndex) {
   for (int i = 0; i < 9; ++i) EXPECT_EQ(index[i], i);
   H5Dclose(d);
   H5Fclose(f);
+  const SnapshotLayout layout = readSnapshotLayout(path("v.h5"));
+  EXPECT_TRUE(layout.xdmfVertices);
+  EXPECT_NE(std::find(layout.particleDatasets.begin(), layout.particleDatasets.end(), "density"),
+            layout.particleDatasets.end());
+  deleteLink(path("v.h5"), "/xdmf/vertices");
+  EXPECT_FALSE(readSnapshotLayout(path("v.h5")).xdmfVertices);
   EXPECT_EQ(xdmfVertexPrecision(9), 4);
   EXPECT_EQ(xdmfVertexPrecision(std::size_t{1} << 31), 8);
 }

@@ -97,6 +97,13 @@ TEST(RestartExtend, KeysThatWouldChangeTheRunMidwayAreRefused) {
     EXPECT_NE(what.find("'sph.kernel' cannot change at a restart"), std::string::npos) << what;
     EXPECT_NE(what.find("time.t_end"), std::string::npos) << what;
   }
+  options.restartOverrides = {"time.max_steps=3"};
+  try {
+    restartRun(dir.string(), options);
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("time.max_steps = 3 is not beyond"), std::string::npos) << e.what();
+  }
   options.restartOverrides = {"time.t_end=0.05 s"};
   try {
     restartRun(dir.string(), options);

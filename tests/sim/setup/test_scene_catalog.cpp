@@ -77,6 +77,13 @@ TEST(SceneCatalog, AFileOnDiskWinsOverAShippedName) {
   fs::current_path(cwd);
   EXPECT_EQ(local.text, "# not the shipped one\n");
   EXPECT_EQ(local.label, "impact_rz");
+  // A directory of the name (a run's --out) does not hide the shipped scene.
+  fs::remove(file);
+  fs::create_directories(dir / "impact_rz");
+  fs::current_path(dir);
+  const SceneText overDirectory = readSceneArgument("impact_rz");
+  fs::current_path(cwd);
+  EXPECT_EQ(overDirectory.label, "shipped scene 'impact_rz'");
   const SceneText shipped = readSceneArgument("impact_rz");
   EXPECT_EQ(shipped.label, "shipped scene 'impact_rz'");
   EXPECT_EQ(shipped.text, std::string(findShippedScene("impact_rz")->text));
