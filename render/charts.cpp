@@ -84,7 +84,6 @@ std::string chartSpecJson(const ChartSpec& spec) {
     json += (i ? ", " : "") + std::string("{\"y\": ") + jsonNumber(spec.hlines[i].y, 17) +
             ", \"label\": " + jsonString(spec.hlines[i].label) + "}";
   json += "],\n";
-  json += std::string("  \"equal_aspect\": ") + boolean(spec.equalAspect) + ",\n";
   json += "  \"note\": " + jsonString(spec.note) + ",\n";
   json += "  \"out\": " + path(spec.out) + ",\n";
   json += "  \"width\": " + std::to_string(spec.width) + ",\n";

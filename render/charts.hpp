@@ -43,7 +43,6 @@ struct ChartSpec {
   std::string xlabel{}, ylabel{}, title{};  // labels with units, e.g. "t [s]"; an x label in
                                             // [s] is shown in ms or us when the times are short
   std::vector<ChartLine> hlines{};          // dashed grey lines
-  bool equalAspect = false;                 // one metre the same length on both axes
   std::string note{};                       // a line of text in the middle of the axes: "no
                                             // coating needed" where the bars are all zero
   std::filesystem::path out{};              // the PNG

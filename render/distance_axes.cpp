@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "render/font.hpp"
 #include "render/ticks.hpp"
@@ -30,13 +29,6 @@ AxisMap axisMap(const Framing& f, int axis) {
   return {a, b - a};
 }
 
-std::string lengthText(double metres, double step) {
-  if (std::abs(metres) < step * 1e-9) return "0";
-  const int places = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
-  char text[32];
-  std::snprintf(text, sizeof text, "%.*f", places, metres);
-  return text;
-}
 
 }  // namespace
 
@@ -54,7 +46,7 @@ void drawDistanceAxes(Image& image, const Framing& f, const AxisNames& names, in
       const double metres = k * step;
       const int p = static_cast<int>(std::lround(map.pixel(metres)));
       if (p < 0 || p >= length) continue;
-      const std::string text = lengthText(metres, step);
+      const std::string text = roundLabel(metres, step);
       if (axis == 0) {  // along the bottom edge, labels above the marks
         image.fillRect(p - s / 2, f.plotHeight - tick, p - s / 2 + s, f.plotHeight, ink);
         const int w = textWidth(text, s);

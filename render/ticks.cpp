@@ -17,11 +17,7 @@ double niceStep(double span, int target) {
   return best;
 }
 
-namespace {
-
-// The text of v at a tick step: plain decimals with as many places as the step needs while the
-// number is readable that way (0.01 .. 9999), an exponent beyond.
-std::string tickText(double v, double step) {
+std::string roundLabel(double v, double step) {
   if (std::abs(v) < step * 1e-9) return "0";
   const double magnitude = std::abs(v);
   if (magnitude >= 1e-2 && magnitude < 1e4) {
@@ -35,6 +31,8 @@ std::string tickText(double v, double step) {
                                 1, 6);
   return formatNumber(v, digits);
 }
+
+namespace {
 
 TickSet linearTicks(const ColorScale& scale, int target) {
   TickSet out;
@@ -53,7 +51,7 @@ TickSet linearTicks(const ColorScale& scale, int target) {
   if (!(last - first < 50)) return out;
   for (long k = 0; k <= static_cast<long>(last - first); ++k) {
     const double v = (first + static_cast<double>(k)) * step;
-    out.ticks.push_back({v, scale.normalise(v), tickText(v / unit, step / unit)});
+    out.ticks.push_back({v, scale.normalise(v), roundLabel(v / unit, step / unit)});
   }
   return out;
 }
@@ -70,7 +68,7 @@ TickSet logTicks(const ColorScale& scale) {
       const double v = m * std::pow(10.0, d);
       const double lv = std::log10(v);
       if (lv < lo - 1e-9 || lv > hi + 1e-9) continue;
-      out.ticks.push_back({v, scale.normalise(v), tickText(v, v)});
+      out.ticks.push_back({v, scale.normalise(v), roundLabel(v, v)});
     }
   }
   return out;

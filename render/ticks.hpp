@@ -27,4 +27,8 @@ TickSet colorBarTicks(const ColorScale& scale, int target = 5);
 // The step 1, 2 or 5 x 10^k nearest (max - min) / target on a log scale.
 double niceStep(double span, int target);
 
+// A tick's text at a round step: plain decimals with as many places as the step needs while the
+// number reads well that way (0.01 .. 9999), an exponent beyond. Colour bars and distance axes.
+std::string roundLabel(double value, double step);
+
 }  // namespace ejecta::render
