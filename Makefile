@@ -21,8 +21,9 @@ build: configure
 demo: build
 	$(BUILD)/apps/ejecta run --overwrite --out runs/demo
 
-# The suite, then the readers' fuzzers (a clang build of the libraries they need, ~3 minutes on
-# 2 cores, and ~1 minute of fuzzing: docs/robustness.md).
+# The suite, then the readers under AddressSanitizer + UndefinedBehaviorSanitizer: a clang build
+# of the libraries they need, their unit tests and their fuzzers (~1 minute of fuzzing;
+# docs/robustness.md).
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
 	@$(MAKE) --no-print-directory fuzz-ci
@@ -79,15 +80,18 @@ sanitize: deps
 fuzz: fuzz-build
 	@bash cmake/run-fuzzers.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
 
-# What `make test` runs after the suite: the fuzzers with a fixed seed and input count.
+# What `make test` runs after the suite: the readers' unit tests under the sanitizers (clang),
+# then the fuzzers with a fixed seed and input count.
 fuzz-ci: fuzz-build
+	cd $(FUZZ_BUILD) && $(SANITIZE_ENV) ctest --output-on-failure -j $(JOBS) -L unit
 	@bash cmake/run-fuzzers.sh $(FUZZ_BUILD) ci
 
 fuzz-build:
 	@bash cmake/install-deps.sh fuzz
 	@CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Release -DEJECTA_FUZZ=ON \
 	  > $(FUZZ_BUILD).configure.log 2>&1 || (cat $(FUZZ_BUILD).configure.log; exit 1)
-	@cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzz_scene_reader fuzz_snapshot_reader
+	@cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzz_scene_reader fuzz_snapshot_reader \
+	  sanitized_reader_tests
 
 clean:
 	rm -rf $(BUILD) $(BUILD).configure.log $(SANITIZE_BUILD) $(SANITIZE_BUILD).configure.log \
