@@ -22,8 +22,8 @@ demo: build
 	$(BUILD)/apps/ejecta run --overwrite --out runs/demo
 
 # The suite, then the readers under AddressSanitizer + UndefinedBehaviorSanitizer: a clang build
-# of the libraries they need, their unit tests and their fuzzers (~1 minute of fuzzing;
-# docs/robustness.md).
+# of the libraries they are part of, those libraries' unit tests and the readers' fuzzers
+# (~8 minutes on 2 cores from a clean folder; docs/robustness.md).
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
 	@$(MAKE) --no-print-directory fuzz-ci
@@ -43,7 +43,8 @@ verification: build
 # RZ revolved), the impact scene's solid-mechanics overhead, ray-cast view factors, the thermal
 # chain with and without the asteroid as occluder, the wall solvers, and off-screen rendering;
 # throughput per core at 1 and 2 threads where it scales; what the snapshots' checksums cost;
-# the memory a run takes per particle (against the memory check's constant).
+# the memory a run takes per particle (against the memory check's constant); what the exact
+# reference solutions cost.
 bench: build
 	$(BUILD)/bench/ejecta_bench_sedov --n 40
 	$(BUILD)/bench/ejecta_bench_time_steps --problem sedov_2d --set "bodies[0].spacing=0.01" --set "energy_deposits[0].width=0.02"
@@ -56,6 +57,7 @@ bench: build
 	$(BUILD)/bench/ejecta_bench_render --threads-sweep
 	$(BUILD)/bench/ejecta_bench_snapshot_io --particles 1000000 --repeats 3
 	$(BUILD)/bench/ejecta_bench_memory
+	$(BUILD)/bench/ejecta_bench_exact_solutions
 
 # Checked builds (docs/robustness.md), each in a folder of its own:
 #   make sanitize  the unit tests built with AddressSanitizer + UndefinedBehaviorSanitizer (gcc);
@@ -80,8 +82,8 @@ sanitize: deps
 fuzz: fuzz-build
 	@bash cmake/run-fuzzers.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
 
-# What `make test` runs after the suite: the readers' unit tests under the sanitizers (clang),
-# then the fuzzers with a fixed seed and input count.
+# What `make test` runs after the suite: the unit tests of core/ and sim/ under the sanitizers
+# (clang; tests/fuzz/CMakeLists.txt says which), then the fuzzers with a fixed seed and input count.
 fuzz-ci: fuzz-build
 	cd $(FUZZ_BUILD) && $(SANITIZE_ENV) ctest --output-on-failure -j $(JOBS) -L unit
 	@bash cmake/run-fuzzers.sh $(FUZZ_BUILD) ci
@@ -91,7 +93,7 @@ fuzz-build:
 	@CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Release -DEJECTA_FUZZ=ON \
 	  > $(FUZZ_BUILD).configure.log 2>&1 || (cat $(FUZZ_BUILD).configure.log; exit 1)
 	@cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzz_scene_reader fuzz_snapshot_reader \
-	  sanitized_reader_tests
+	  sanitized_unit_tests
 
 clean:
 	rm -rf $(BUILD) $(BUILD).configure.log $(SANITIZE_BUILD) $(SANITIZE_BUILD).configure.log \
