@@ -355,6 +355,23 @@ Report sedov(const std::string& name, const Options& options, int defaultLevels)
         {"shock_radius_error", (shock.radius - Rs) / Rs, "1"},
         {"peak_density_ratio", shock.density / sedovExact.postShockDensity(), "1"},
     };
+    if (scene.geometry == Geometry::Axisymmetric) {
+      // The axis of RZ: the largest particle pressure in the shell behind the shock (0.5 to 1.05
+      // shock radii), among the rings within two spacings of the axis and among those more than
+      // four spacings from it, each over the exact jump (docs/rz.md, "The axis behind a shock").
+      const double spacing = f.run.spacing;
+      double nearAxis = 0.0, offAxis = 0.0;
+      for (std::size_t i = 0; i < p.numReal; ++i) {
+        const double r = blastDistance(p, i, deposit.center, dim);
+        if (r < 0.5 * Rs || r > 1.05 * Rs) continue;
+        const double axisDistance = std::abs(p.x[0][i]);
+        if (axisDistance < 2.0 * spacing) nearAxis = std::max(nearAxis, p.P[i]);
+        if (axisDistance > 4.0 * spacing) offAxis = std::max(offAxis, p.P[i]);
+      }
+      const double jump = sedovExact.postShockPressure(f.time);
+      f.run.metrics.push_back({"near_axis_peak_pressure_ratio", nearAxis / jump, "1"});
+      f.run.metrics.push_back({"off_axis_peak_pressure_ratio", offAxis / jump, "1"});
+    }
     writeProfile(options, name, f.run, "r,rho,P,rho_exact,P_exact", rows);
     std::vector<std::vector<double>> radii;
     for (const auto& [t, r] : history) radii.push_back({t, r, sedovExact.shockRadius(t)});

@@ -33,7 +33,20 @@ void expectSedov(const Report& r, double radiusTolerance, double minPeak, double
 
 TEST(VerifySedov, Planar2D) { expectSedov(runProblem("sedov_2d", Options{}), 0.03, 0.65, 0.35); }
 TEST(VerifySedov, AxisymmetricRZTheSeedsCase) {
-  expectSedov(runProblem("sedov_rz", Options{}), 0.03, 0.65, 0.3);
+  const Report r = runProblem("sedov_rz", Options{});
+  expectSedov(r, 0.03, 0.65, 0.3);
+  // The axis behind the shock (docs/rz.md): the rings within two spacings of it peak no higher
+  // than 1.3x the jump and than 1.3x the rings away from it, at 0.1 and at 0.05 m. Without the
+  // scene's artificial conductivity their peak grows with refinement (measured 1.72x and 3.71x
+  // the jump, 1.19x and 2.55x the off-axis peak); with it, 0.65x and 1.08x the jump (1.12x at
+  // 0.035 m: it converges), 0.82x and 1.22x the off-axis peak (1.20x at 0.035 m). 1.3 leaves
+  // room above the finest measured ratios for the lattice noise of a single largest particle.
+  for (const ResolutionRun& run : r.runs) {
+    const double nearAxis = run.metric("near_axis_peak_pressure_ratio");
+    const double offAxis = run.metric("off_axis_peak_pressure_ratio");
+    EXPECT_LT(nearAxis, 1.3) << "spacing " << run.spacing;
+    EXPECT_LT(nearAxis, 1.3 * offAxis) << "spacing " << run.spacing;
+  }
 }
 TEST(VerifySedov, Spherical3D) {
   // 36 particles across the box puts the shock only R/dx = 12.6 spacings from the centre (70-80 in
