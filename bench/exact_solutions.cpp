@@ -1,8 +1,9 @@
 // ejecta_bench_exact_solutions: what the reference solutions that verification compares against
 // cost (sim/exact/): evaluations of the Sedov-Taylor solution per second, and the radial Euler
 // solver's cell updates per second on the sod_2d reference (a disc of radius 0.4 in [0, 1], to
-// t = 0.25). Both are evaluated for every particle of a verified snapshot, so their cost sets
-// how often a run can be compared with them.
+// t = 0.25). The Sedov solution is evaluated at every particle of a verified snapshot and the
+// radial solver is run once per comparison, so their cost sets how often a run can be compared
+// with them.
 //
 //   ejecta_bench_exact_solutions [--evaluations 1000000] [--cells 4000] [--json]
 #include <chrono>
