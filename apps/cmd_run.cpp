@@ -99,10 +99,15 @@ void printSummary(const RunOutcome& r, const HookResults& hooks, const std::stri
                     (static_cast<double>(s.particles) * static_cast<double>(std::max(s.steps, 1L))));
   // The crater (fields/crater_summary.hpp).
   if (const auto& c = hooks.crater) {
-    if (c->found)
+    if (c->found) {
       std::printf("  crater: depth %.3g m, apparent diameter %.3g m, rim-to-rim %.3g m "
                   "(profile: crater_profile.csv)\n",
                   c->depth, c->apparentDiameter, c->rimDiameter);
+      if (c->growth)
+        std::printf("  crater %s: %+.1f%% in %s over the last fifth of the run (since t = %.3g s)\n",
+                    c->growth->growing ? "still growing" : "has stopped growing",
+                    100.0 * c->growth->change, c->planar ? "area" : "volume", c->growth->since);
+    }
     else if (!c->note.empty())
       std::printf("  crater: none measured (%s)\n", c->note.c_str());
   }

@@ -25,6 +25,10 @@ CraterSummary craterFailure(const std::string& why) {
 
 void addToSummary(const CraterSummary& c, RunSummary& s) {
   s.extras.push_back({"crater_found", c.found});
+  if (c.growth) {
+    s.extras.push_back({"crater_growth_last_fifth", c.growth->change});
+    s.extras.push_back({"crater_still_growing", c.growth->growing});
+  }
   if (!c.note.empty()) s.extras.push_back({"crater_note", c.note});
   if (!c.found) return;
   s.extras.push_back({"crater_depth_m", c.depth});

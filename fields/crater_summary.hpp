@@ -3,7 +3,10 @@
 // (docs/output_format.md) and what `ejecta run` prints.
 #include <string>
 
+#include <optional>
+
 #include "fields/crater.hpp"
+#include "fields/crater_growth.hpp"
 #include "sim/run/summary.hpp"
 
 namespace ejecta::fields {
@@ -16,6 +19,8 @@ struct CraterSummary {
   double volume = 0.0;         // [m^3]; planar: the trench's cross-section [m^2]
   double excavatedMass = 0.0;  // [kg]; planar: per metre [kg/m]
   double elongation = 1.0;     // along-track / cross-track diameter; not for planar runs
+  // Over the last fifth of the run (fields/crater_growth.hpp); none when the history is short.
+  std::optional<CraterGrowth> growth;
 };
 
 CraterSummary craterSummary(const CraterMetrics& metrics, bool planar);

@@ -88,7 +88,11 @@ void addFieldOutputs(RunOptions& options, const Scene& scene,
                                     ? *tracking->last
                                     : measureCrater(sim.particles(), ctx, *crater, resolution, &sim.ranks());
         if (!sim.ranks().isRoot()) return;
-        const CraterSummary c = craterSummary(m, crater->planar);
+        CraterSummary c = craterSummary(m, crater->planar);
+        std::vector<std::string> rows = tracking->history.rows();
+        if (!(tracking->last && tracking->lastTime == sim.time()))
+          rows.push_back(craterHistoryRow(sim.time(), m, crater->planar));
+        c.growth = craterGrowth(rows);
         addToSummary(c, summary);
         writeFileAtomically(fs::path(outDir) / "crater_profile.csv", craterProfileCsv(m));
         if (onCrater) onCrater(c);

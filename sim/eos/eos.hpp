@@ -25,6 +25,17 @@ class EquationOfState {
   // pressure and temperature). Solids and their cold curves may dip below u = 0 (elastic
   // unloading, expansion), so only gases are checked.
   virtual bool requiresPositiveEnergy() const { return false; }
+  // The density at which P = 0 with u = 0 [kg/m^3] (the solid's reference density), or 0 where
+  // the form has none (gases, explosives): what a porous material's matrix is compacted to.
+  virtual double referenceDensity() const { return 0.0; }
+  // dP/drho at constant u and dP/du at constant rho (a porous matrix's response,
+  // sim/solid/porosity.hpp). The default differences the pressure: central, or forward where
+  // the step would cross u = 0 (the solid forms evaluate u < 0 as 0, a kink there).
+  struct Slopes {
+    double dRho = 0.0;
+    double dU = 0.0;
+  };
+  virtual Slopes pressureSlopes(double rho, double u) const;
 };
 
 // Ideal (gamma-law) gas: P = (gamma - 1) rho u, c^2 = gamma P / rho.

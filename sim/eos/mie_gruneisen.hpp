@@ -55,6 +55,7 @@ class MieGruneisen final : public StateEquationOfState<MieGruneisen> {
   // Exact inverse (P is linear in u). Returns a negative u where (rho, P) lies below the u = 0
   // curve; throws std::domain_error for rho <= 0 or where dP/du vanishes.
   double specificEnergy(double rho, double P) const override;
+  double referenceDensity() const override { return m_.rho0; }
 
   // Compression beyond which mu is clamped: 99% of the first zero of the denominator (the fit's
   // limiting compression), or +infinity when the denominator has no zero.

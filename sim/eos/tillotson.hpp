@@ -61,6 +61,11 @@ class Tillotson final : public EquationOfState {
   // Smallest u >= 0 with pressure(rho, u) == P; std::domain_error if none exists (P below the
   // cold curve P(rho, 0), below minimumPressure, or rho not positive).
   double specificEnergy(double rho, double P) const override;
+  double referenceDensity() const override { return par_.rho0; }
+  Slopes pressureSlopes(double rho, double u) const override {
+    const State s = state(rho, u);
+    return {s.dPdrho, s.dPdu};
+  }
 
   Region region(double rho, double u) const;
   const TillotsonParameters& parameters() const { return par_; }

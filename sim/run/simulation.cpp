@@ -13,6 +13,8 @@
 
 #include "sim/setup/bodies.hpp"
 #include "sim/sph/density_pass.hpp"
+#include "sim/run/packages/phase_fractions_package.hpp"
+#include "sim/run/packages/porosity_package.hpp"
 #include "sim/run/packages/programmed_burn_package.hpp"
 #include "sim/run/timestep_criteria.hpp"
 #include "sim/run/packages/strength_package.hpp"
@@ -118,6 +120,10 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
   if (!scene_.detonations.empty() && !p_.hasBurn())
     throw SimulationError("scene '" + scene_.name + "' detonates an explosive but the particles "
                           "carry no lighting times (build them with buildParticles)");
+  // Porosity first: the burn, strength and fracture then act on the porous pressure.
+  if (materials_.anyPorosity())
+    addPackage(std::make_shared<PorosityPackage>(materials_, scene_.sph.density));
+  if (materials_.anyPhaseChanges()) addPackage(std::make_shared<PhaseFractionsPackage>());
   if (p_.hasBurn()) addPackage(std::make_shared<ProgrammedBurnPackage>(std::move(burn), scene_.sph.eta));
   if (materials_.anyStrength()) {
     addPackage(std::make_shared<StrengthPackage>(ws_.dim));

@@ -152,7 +152,8 @@ double initialSpecificEnergy(const BodySpec& body, const MaterialTable& material
   if (body.internalEnergy) return *body.internalEnergy;
   if (body.material < 0 || static_cast<std::size_t>(body.material) >= materials.size())
     throw SceneError(context + ": material index out of range");
-  const EquationOfState& eos = *materials[static_cast<std::size_t>(body.material)].eos;
+  const Material& material = materials[static_cast<std::size_t>(body.material)];
+  const EquationOfState& eos = *material.eos;
   // A detonated explosive without a given state carries its chemical energy (the scene checked
   // that a detonation lights it).
   if (!body.pressure) {
@@ -161,6 +162,12 @@ double initialSpecificEnergy(const BodySpec& body, const MaterialTable& material
     throw SceneError(context + ": give 'pressure' or 'internal_energy'");
   }
   try {
+    // A porous body's density and pressure are the bulk's: its matrix is alpha_0 times denser
+    // and carries alpha_0 times the pressure (P = P_s(alpha rho, u) / alpha).
+    if (material.porosity) {
+      const double alpha0 = material.porosity->initialDistention();
+      return eos.specificEnergy(alpha0 * body.density, alpha0 * body.pressure.value_or(0.0));
+    }
     return eos.specificEnergy(body.density, body.pressure.value_or(0.0));
   } catch (const std::domain_error& e) {
     throw SceneError(context + ": no internal energy gives pressure " +

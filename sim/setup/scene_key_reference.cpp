@@ -152,6 +152,7 @@ std::string sceneKeyReferenceMarkdown() {
       os << "\nLibrary: " << joined(strengthLibraryNames()) << ".\n";
     }
     if (t.path == "materials[].fracture") modelTable(os, fractureModelFamily());
+    if (t.path == "materials[].porosity") modelTable(os, porosityModelFamily());
     if (t.path == "bodies[]") {
       os << "\n| shape | its keys | meaning |\n|---|---|---|\n";
       for (const SceneShape& shape : sceneShapes())

@@ -43,6 +43,9 @@ void readModelTable(const TableReader& material, const ModelFamily& family, Mode
         r.check(*v >= 0, k.name, "must not be negative");
         out.values.emplace_back(std::string(k.name), static_cast<double>(*v));
       }
+    } else if (k.kind == KeyKind::Bool) {
+      if (const std::optional<bool> v = r.optBool(k.name))
+        out.values.emplace_back(std::string(k.name), *v ? 1.0 : 0.0);
     } else if (k.kind == KeyKind::Quantity || k.kind == KeyKind::Number) {
       if (const std::optional<double> v = r.optQuantity(k.name, k.dimension)) {
         r.check(*v >= 0.0, k.name, nonNegativeMessage(*v, k.dimension));
@@ -56,6 +59,7 @@ void readMaterialModels(const TableReader& r, MaterialSpec& m) {
   readModelTable(r, thermalModelFamily(), m.thermal);
   readModelTable(r, strengthModelFamily(), m.strength);
   readModelTable(r, fractureModelFamily(), m.fracture);
+  readModelTable(r, porosityModelFamily(), m.porosity);
 }
 
 }  // namespace

@@ -28,12 +28,14 @@ std::vector<SceneTable> materialTables() {
               "override the library entry; without a library every parameter is required"),
         table("thermal", "none", "`[materials.thermal]`: specific heat, temperatures (below)"),
         table("strength", "none", "`[materials.strength]`: a yield model (below)"),
-        table("fracture", "none", "`[materials.fracture]`: a fracture model (below)")}},
+        table("fracture", "none", "`[materials.fracture]`: a fracture model (below)"),
+        table("porosity", "none", "`[materials.porosity]`: pores below the resolution (below)")}},
       // Keys depend on the eos: checked against sim/eos/eos_catalog.hpp in readMaterials.
       {"materials[].parameters", "", "", {anyKey("a parameter of the material's eos")}},
       {"materials[].thermal", "`[materials.thermal]`", "", thermalModelFamily().keys},
       {"materials[].strength", "`[materials.strength]`", "", strengthModelFamily().keys},
       {"materials[].fracture", "`[materials.fracture]`", "", fractureModelFamily().keys},
+      {"materials[].porosity", "`[materials.porosity]`", "", porosityModelFamily().keys},
   };
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // A material as a scene gives it ([[materials]]): its equation of state and optional thermal,
-// strength and fracture model tables, in SI.
+// strength, fracture and porosity model tables, in SI.
 #include <string>
 #include <string_view>
 #include <utility>
@@ -37,6 +37,7 @@ struct MaterialSpec {
   ModelSpec thermal;              // keys: sim/solid/materials.cpp; docs/scenes.md
   ModelSpec strength;
   ModelSpec fracture;
+  ModelSpec porosity;
   int line = 0;                   // source line in the scene file, for later messages
 };
 

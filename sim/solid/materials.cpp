@@ -20,6 +20,40 @@ double valueOr(const ModelSpec& spec, std::string_view key, double fallback) {
   return v ? *v : fallback;
 }
 
+// Latent heats: phase_changes = true takes the thermal library's (docs/thermal.md), and the
+// latent-heat keys give or override them; without either, the seed's straight line T0 + u/c_v.
+void applyPhaseChanges(const ModelSpec& t, const ThermalLibraryEntry* entry, ThermalModel& model) {
+  const double* flag = t.find("phase_changes");
+  const bool explicitKeys = t.find("latent_heat_melting") || t.find("latent_heat_vaporisation") ||
+                            t.find("boiling_temperature");
+  if (flag && *flag == 0.0) {
+    if (explicitKeys)
+      fail("thermal: phase_changes = false, but latent_heat_melting, latent_heat_vaporisation or "
+           "boiling_temperature is given");
+    return;
+  }
+  if (!flag && !explicitKeys) return;
+  if (flag && entry && entry->meltLatentHeat > 0.0) {
+    model.meltLatentHeat = entry->meltLatentHeat;
+    model.boilTemperature = entry->boilTemperature;
+    model.vapourLatentHeat = entry->vapourLatentHeat;
+    model.liquidSpecificHeat = entry->liquidSpecificHeat;
+  }
+  model.meltLatentHeat = valueOr(t, "latent_heat_melting", model.meltLatentHeat);
+  model.boilTemperature = valueOr(t, "boiling_temperature", model.boilTemperature);
+  model.vapourLatentHeat = valueOr(t, "latent_heat_vaporisation", model.vapourLatentHeat);
+  model.liquidSpecificHeat = valueOr(t, "liquid_specific_heat", model.liquidSpecificHeat);
+  model.vapourSpecificHeat = valueOr(t, "vapour_specific_heat", 0.0);
+  if (!model.phaseChanges())
+    fail("thermal.phase_changes: no latent heats for this material in the thermal library: give "
+         "latent_heat_melting, boiling_temperature and latent_heat_vaporisation (J/kg, K)");
+  if (!std::isfinite(model.meltTemperature))
+    fail("thermal: phase changes need a melting point (melt_temperature)");
+  if (!(model.boilTemperature > model.meltTemperature))
+    fail("thermal.boiling_temperature must exceed the melting point (" +
+         std::to_string(model.meltTemperature) + " K)");
+}
+
 // Thermal data: the [materials.thermal] keys, else the thermal library entry named by
 // thermal.library or by the eos library, else (ideal gas) R / ((gamma - 1) M).
 ThermalModel makeThermal(const MaterialSpec& spec, const std::optional<double>& strengthMelt) {
@@ -49,6 +83,7 @@ ThermalModel makeThermal(const MaterialSpec& spec, const std::optional<double>& 
   if (const double* tm = t.find("melt_temperature")) model.meltTemperature = *tm;
   else if (strengthMelt) model.meltTemperature = *strengthMelt;
   else if (entry) model.meltTemperature = entry->meltTemperature;
+  applyPhaseChanges(t, entry, model);
   return model;
 }
 
@@ -88,6 +123,30 @@ FractureModel makeFracture(const MaterialSpec& spec, bool hasStrength) {
   return model;
 }
 
+// The porosity table's P-alpha model on the material's equation of state (its matrix).
+std::optional<PalphaModel> makePorosity(const MaterialSpec& spec, const EquationOfState& eos) {
+  const ModelSpec& t = spec.porosity;
+  if (!t.present) return std::nullopt;
+  PalphaParameters p;
+  const double* phi = t.find("porosity");
+  const double* alpha0 = t.find("initial_distention");
+  if ((phi != nullptr) == (alpha0 != nullptr))
+    fail("porosity: give exactly one of porosity (phi_0) and initial_distention (alpha_0)");
+  if (phi && !(*phi < 1.0)) fail("porosity.porosity must be below 1");
+  p.initialDistention = phi ? 1.0 / (1.0 - *phi) : *alpha0;
+  if (!t.find("elastic_pressure") || !t.find("solid_pressure"))
+    fail("porosity model \"p_alpha\" needs elastic_pressure and solid_pressure (its crush curve)");
+  p.elasticPressure = *t.find("elastic_pressure");
+  p.solidPressure = *t.find("solid_pressure");
+  p.crushExponent = valueOr(t, "crush_exponent", p.crushExponent);
+  p.solidDensity = valueOr(t, "solid_density", eos.referenceDensity());
+  if (p.solidDensity > 0.0) p.solidSoundSpeed = eos.soundSpeed(p.solidDensity, 0.0);
+  p.porousSoundSpeed = valueOr(t, "porous_sound_speed", p.solidSoundSpeed);
+  p.maxChangePerStep = valueOr(t, "max_distention_change", p.maxChangePerStep);
+  if (!(p.maxChangePerStep > 0.0)) fail("porosity.max_distention_change must be positive");
+  return PalphaModel(p);
+}
+
 }  // namespace
 
 MaterialTable MaterialTable::fromSpecs(const std::vector<MaterialSpec>& specs,
@@ -102,6 +161,7 @@ MaterialTable MaterialTable::fromSpecs(const std::vector<MaterialSpec>& specs,
       m.strength = makeStrength(spec, melt);
       m.thermal = makeThermal(spec, melt);
       m.fracture = makeFracture(spec, m.strength.has_value());
+      m.porosity = makePorosity(spec, *m.eos);
       table.add(std::move(m));
     } catch (const std::invalid_argument& e) {
       throw SceneError(sourcePath + ":" + std::to_string(spec.line) + ": material '" +
@@ -114,6 +174,18 @@ MaterialTable MaterialTable::fromSpecs(const std::vector<MaterialSpec>& specs,
 bool MaterialTable::anyStrength() const {
   for (const Material& m : materials_)
     if (m.strength) return true;
+  return false;
+}
+
+bool MaterialTable::anyPhaseChanges() const {
+  for (const Material& m : materials_)
+    if (m.thermal.phaseChanges()) return true;
+  return false;
+}
+
+bool MaterialTable::anyPorosity() const {
+  for (const Material& m : materials_)
+    if (m.porosity) return true;
   return false;
 }
 

@@ -8,6 +8,7 @@
 #include "sim/eos/eos.hpp"
 #include "sim/solid/fracture.hpp"
 #include "sim/solid/material_spec.hpp"
+#include "sim/solid/porosity.hpp"
 #include "sim/solid/strength.hpp"
 #include "sim/solid/thermal.hpp"
 
@@ -23,6 +24,7 @@ struct Material {
   ThermalModel thermal;
   std::optional<StrengthModel> strength;
   FractureModel fracture;  // kind None: never fails
+  std::optional<PalphaModel> porosity;  // pores below the resolution (sim/solid/porosity.hpp)
 };
 
 class MaterialTable {
@@ -40,6 +42,8 @@ class MaterialTable {
   void add(Material m) { materials_.push_back(std::move(m)); }
   bool anyStrength() const;
   bool anyFracture() const;
+  bool anyPorosity() const;
+  bool anyPhaseChanges() const;
 
  private:
   std::vector<Material> materials_;

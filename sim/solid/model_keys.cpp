@@ -13,6 +13,7 @@ const Dimension kPa = Dimension::Pressure;
 const Dimension kKelvin = Dimension::Temperature;
 const Dimension kPerVolume{0, -3, 0, 0};
 const Dimension kSpecificHeat{0, 2, -2, -1};
+const Dimension kSpecificEnergy = Dimension::SpecificEnergy;
 
 // Defaults are those sim/solid/materials.cpp applies (ThermalModel, FractureModel).
 std::vector<std::string_view> modelNames(const std::vector<ModelKind>& models) {
@@ -35,7 +36,20 @@ const ModelFamily& thermalModelFamily() {
        number("molar_mass", "28.9644", "ideal gas: molar mass in g/mol (default: dry air)"),
        quantity("initial_temperature", kKelvin, "\"293 K\"", "T0 at u = 0"),
        quantity("melt_temperature", kKelvin, "strength or thermal library; else never",
-                "strength vanishes at and above it")}};
+                "strength vanishes at and above it"),
+       boolean("phase_changes", "false",
+               "latent heats of melting and vaporisation from the thermal library: T(u) has "
+               "plateaus at T_melt and T_boil (docs/thermal.md); false: T0 + u/c_v (the seed's)"),
+       quantity("latent_heat_melting", kSpecificEnergy, "library, with phase_changes",
+                "L_m [J/kg]; giving it turns phase changes on"),
+       quantity("boiling_temperature", kKelvin, "library, with phase_changes",
+                "T_b: the vaporisation plateau"),
+       quantity("latent_heat_vaporisation", kSpecificEnergy, "library, with phase_changes",
+                "L_v [J/kg]"),
+       quantity("liquid_specific_heat", kSpecificHeat, "specific_heat",
+                "c_v of the melt, between T_melt and T_boil"),
+       quantity("vapour_specific_heat", kSpecificHeat, "liquid_specific_heat",
+                "c_v of the vapour, above T_boil")}};
   return family;
 }
 
@@ -87,6 +101,39 @@ const ModelFamily& fractureModelFamily() {
                "the time step (0.1 converges fragment speeds at 2.7x the steps, "
                "docs/fragmentation.md)"),
         integer("seed", "1", "seed of the flaw draw, ≥ 0"),
+    };
+    return f;
+  }();
+  return family;
+}
+
+// The porosity models (sim/solid/porosity.hpp); docs/porosity.md has their sources.
+const ModelFamily& porosityModelFamily() {
+  static const ModelFamily family = [] {
+    ModelFamily f{"porosity",
+                  {{"p_alpha",
+                    "P-alpha (Herrmann 1969; Jutzi, Benz & Michel 2008): the distention falls "
+                    "along a crush curve in pressure",
+                    {"porosity", "initial_distention", "elastic_pressure", "solid_pressure",
+                     "crush_exponent", "solid_density", "porous_sound_speed",
+                     "max_distention_change"}}},
+                  {}};
+    f.keys = {
+        choice("model", modelNames(f.models), "required", "the porosity model (below)"),
+        number("porosity", "—", "initial porosity φ0 in [0, 1): α0 = 1/(1 − φ0); or give "
+               "initial_distention"),
+        number("initial_distention", "—", "initial distention α0 = ρ_solid/ρ > 1"),
+        quantity("elastic_pressure", Dimension::Pressure, "required",
+                 "Pe: plastic compaction begins"),
+        quantity("solid_pressure", Dimension::Pressure, "required",
+                 "Ps: fully compacted (α = 1)"),
+        number("crush_exponent", "2", "n of the crush curve α = 1 + (αe − 1)((Ps − P)/(Ps − Pe))^n"),
+        quantity("solid_density", Dimension::Density, "the eos reference density",
+                 "ρ_s0: the matrix's density at P = 0"),
+        quantity("porous_sound_speed", Dimension::Velocity, "the matrix's (rigid pores below Pe)",
+                 "c_e: the porous material's sound speed at α0"),
+        number("max_distention_change", "0.02",
+               "the most α may change in one step: it limits the time step"),
     };
     return f;
   }();

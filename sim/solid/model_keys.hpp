@@ -1,6 +1,6 @@
 #pragma once
 // The keys of a material's model tables ([materials.thermal], [materials.strength],
-// [materials.fracture]): each key's kind, dimension (SI), default and doc, and which model uses
+// [materials.fracture], [materials.porosity]): each key's kind, dimension (SI), default and doc, and which model uses
 // which. The scene reader reads the tables by these specs (sim/setup/scene_materials.cpp),
 // sim/solid/materials.cpp applies the values, and the key reference in docs/scenes.md is
 // generated from them (`ejecta keys --markdown`). The strength models and their keys are the
@@ -27,5 +27,6 @@ struct ModelFamily {
 const ModelFamily& thermalModelFamily();
 const ModelFamily& strengthModelFamily();
 const ModelFamily& fractureModelFamily();
+const ModelFamily& porosityModelFamily();
 
 }  // namespace ejecta

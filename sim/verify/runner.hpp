@@ -1,7 +1,7 @@
 #pragma once
 // Internal to the verification problems: running a verification scene and collecting its
 // particles and run statistics. The problems themselves are grouped by subject in
-// verification.cpp (gas dynamics) and strength.cpp (solids).
+// verification.cpp (gas dynamics), strength.cpp (solids), porosity.cpp (porous materials).
 #include <functional>
 #include <string>
 #include <vector>
@@ -43,6 +43,8 @@ Report singleRunReport(const std::string& name, const Scene& scene, std::string 
 std::vector<Problem> strengthProblems();
 // The energy-source problems (sources.cpp).
 std::vector<Problem> sourceProblems();
+// The porous-material problems (porosity.cpp).
+std::vector<Problem> porosityProblems();
 
 // Runs `levels` resolutions, coarsest first: spacing x 2^(levels-1), ..., x 1 (the scene's own),
 // calling measure(scene, finished) on each; observed orders for every L1_ metric. `observer`

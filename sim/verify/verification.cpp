@@ -400,6 +400,7 @@ const std::vector<Problem>& problems() {
     std::vector<Problem> out = list;
     for (const Problem& p : detail::strengthProblems()) out.push_back(p);
     for (const Problem& p : detail::sourceProblems()) out.push_back(p);
+    for (const Problem& p : detail::porosityProblems()) out.push_back(p);
     for (const Problem& p : detail::undexProblems()) out.push_back(p);
     return out;
   }();

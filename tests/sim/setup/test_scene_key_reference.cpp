@@ -21,6 +21,7 @@
 #include "sim/setup/scene.hpp"
 #include "sim/setup/scene_schema.hpp"
 #include "sim/solid/fracture.hpp"
+#include "sim/solid/porosity.hpp"
 #include "sim/solid/material_spec.hpp"
 #include "sim/solid/model_keys.hpp"
 #include "sim/solid/strength_models/johnson_cook.hpp"
@@ -81,7 +82,7 @@ TEST(SceneKeyReference, EveryKeyIsDescribed) {
     for (std::string_view k : shape.keys)
       EXPECT_NE(config::findKey(sceneSchema().at("bodies[]"), k), nullptr) << k;
   }
-  for (const ModelFamily* f : {&strengthModelFamily(), &fractureModelFamily()})
+  for (const ModelFamily* f : {&strengthModelFamily(), &fractureModelFamily(), &porosityModelFamily()})
     for (const ModelKind& m : f->models) {
       EXPECT_FALSE(m.doc.empty()) << m.name;
       for (std::string_view k : m.keys) EXPECT_NE(config::findKey(f->keys, k), nullptr) << k;
@@ -120,6 +121,7 @@ TEST(SceneKeyReference, DefaultsAreTheCodes) {
   const JohnsonCookParameters jc;
   const ThermalModel thermal;
   const FractureModel fracture;
+  const PalphaParameters porosity;
   const std::vector<std::tuple<std::string_view, std::string_view, double>> cases = {
       {"sph", "eta", sph.eta},
       {"sph", "relaxation", sph.relaxation},
@@ -158,6 +160,8 @@ TEST(SceneKeyReference, DefaultsAreTheCodes) {
       {"materials[].fracture", "crack_speed_factor", fracture.crackSpeedFactor},
       {"materials[].fracture", "max_crack_increment", fracture.maxCrackIncrement},
       {"materials[].fracture", "seed", static_cast<double>(fracture.seed)},
+      {"materials[].porosity", "crush_exponent", porosity.crushExponent},
+      {"materials[].porosity", "max_distention_change", porosity.maxChangePerStep},
   };
   for (const auto& [path, key, code] : cases)
     EXPECT_EQ(defaultValue(path, key), code) << path << "." << key;

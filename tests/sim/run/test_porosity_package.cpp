@@ -1,0 +1,130 @@
+// The porosity package (sim/run/packages/porosity_package.hpp) in runs: a porous body starts at
+// its bulk density with alpha_0 and the pressure it was given; snapshots carry the distention
+// and a restart resumes bit for bit; a bad [materials.porosity] table is refused naming the
+// file, the material and the reason.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <bit>
+#include <filesystem>
+#include <string>
+
+#include "sim/io/snapshot.hpp"
+#include "sim/run/packages/porosity_package.hpp"
+#include "sim/run/run.hpp"
+#include "sim/setup/embedded_scenes.hpp"
+#include "sim/setup/scene.hpp"
+#include "support/material_scene_error.hpp"
+
+namespace ejecta {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path tempDir(const std::string& tag) {
+  return fs::temp_directory_path() / ("ejecta_porosity_" + tag + "_" + std::to_string(::getpid()));
+}
+
+RunOptions compactionRun(const fs::path& dir, const std::string& tEnd) {
+  RunOptions options;
+  options.outDir = dir.string();
+  options.threads = 1;
+  options.sceneSource = std::string(findEmbeddedScene("verification/compaction_1d"));
+  options.overrides = {"time.t_end=" + tEnd, "output.snapshot_interval=\"1 us\"",
+                       "bodies[0].spacing=\"0.1 mm\""};
+  return options;
+}
+
+ParticleSet snapshotAt(const fs::path& dir, int index, SnapshotInfo& info) {
+  char name[32];
+  std::snprintf(name, sizeof name, "snap_%04d.h5", index);
+  return readSnapshot((dir / "snapshots" / name).string(), info);
+}
+
+const std::vector<double>& distention(const ParticleSet& p) {
+  return p.column(*p.field(PorosityPackage::kDistention), 0);
+}
+
+TEST(PorosityPackage, APorousBodyStartsAtRestWithItsInitialDistention) {
+  const fs::path dir = tempDir("start");
+  fs::remove_all(dir);
+  const RunOptions options = compactionRun(dir, "1 us");
+  ASSERT_TRUE(runScene(parseScene(options.sceneSource, "compaction_1d.toml", options.overrides),
+                       options).ok);
+  SnapshotInfo info;
+  const ParticleSet p = snapshotAt(dir, 0, info);
+  ASSERT_GT(p.numReal, 0u);
+  for (std::size_t i = 0; i < p.numReal; ++i) {
+    EXPECT_DOUBLE_EQ(distention(p)[i], 1.275);
+    // Given P = 0: the matrix sits at its reference density (2117.647 x 1.275 = 2700 to the
+    // scene's 7 digits), so u ~ 0 and |P| is the residue of that rounding, ~1e-7 of Pe.
+    EXPECT_LT(std::abs(p.P[i]), 1e-6 * 0.08e9) << i;
+  }
+  // One microsecond later the wall has compacted the first particles and the wave is on.
+  const ParticleSet q = snapshotAt(dir, 1, info);
+  double least = 2.0;
+  for (double a : distention(q)) least = std::min(least, a);
+  EXPECT_LT(least, 1.01);
+  fs::remove_all(dir);
+}
+
+TEST(PorosityPackage, ARestartResumesBitForBit) {
+  const fs::path straight = tempDir("straight"), resumed = tempDir("resumed");
+  fs::remove_all(straight);
+  fs::remove_all(resumed);
+  const RunOptions a = compactionRun(straight, "3 us");
+  ASSERT_TRUE(runScene(parseScene(a.sceneSource, "compaction_1d.toml", a.overrides), a).ok);
+  const RunOptions b = compactionRun(resumed, "2 us");
+  ASSERT_TRUE(runScene(parseScene(b.sceneSource, "compaction_1d.toml", b.overrides), b).ok);
+  RunOptions extend;
+  extend.threads = 1;
+  extend.restartOverrides = {"time.t_end=\"3 us\""};
+  const RunOutcome outcome = restartRun(resumed.string(), extend);
+  ASSERT_TRUE(outcome.ok) << outcome.error;
+  SnapshotInfo ia, ib;
+  const ParticleSet p = snapshotAt(straight, 3, ia), q = snapshotAt(resumed, 3, ib);
+  ASSERT_EQ(p.numReal, q.numReal);
+  EXPECT_EQ(ia.step, ib.step);
+  for (std::size_t i = 0; i < p.numReal; ++i) {
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(distention(p)[i]),
+              std::bit_cast<std::uint64_t>(distention(q)[i])) << i;
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(p.rho[i]), std::bit_cast<std::uint64_t>(q.rho[i])) << i;
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(p.P[i]), std::bit_cast<std::uint64_t>(q.P[i])) << i;
+  }
+  fs::remove_all(straight);
+  fs::remove_all(resumed);
+}
+
+std::string withPorosity(const std::string& eos, const std::string& table) {
+  return "[scene]\nname = \"p\"\ndimension = \"1d\"\n[time]\nt_end = 1e-6\n"
+         "[[materials]]\nname = \"rubble\"\n" + eos + "\n[materials.porosity]\n" + table +
+         "\n[[bodies]]\nname = \"b\"\nmaterial = \"rubble\"\nshape = \"box\"\nmin = [0.0]\n"
+         "max = [0.01]\nspacing = 0.001\ndensity = 2000.0\npressure = 0.0\n";
+}
+
+TEST(PorosityPackage, BadTablesAreRefusedWithTheirReason) {
+  const std::string granite = "eos = \"tillotson\"\nlibrary = \"granite\"";
+  const std::string crush = "elastic_pressure = \"0.1 GPa\"\nsolid_pressure = \"1 GPa\"\n";
+  auto error = [&](const std::string& eos, const std::string& table) {
+    return test::materialSceneError(withPorosity(eos, "model = \"p_alpha\"\n" + table));
+  };
+  const std::string both = error(granite, crush + "porosity = 0.3\ninitial_distention = 1.4");
+  EXPECT_NE(both.find("bad.toml"), std::string::npos) << both;
+  EXPECT_NE(both.find("material 'rubble'"), std::string::npos) << both;
+  EXPECT_NE(both.find("exactly one of porosity"), std::string::npos) << both;
+  EXPECT_NE(error(granite, crush).find("exactly one of porosity"), std::string::npos);
+  EXPECT_NE(error(granite, crush + "porosity = 1.0").find("must be below 1"), std::string::npos);
+  EXPECT_NE(error(granite, "porosity = 0.3\nelastic_pressure = 1e8").find("solid_pressure"),
+            std::string::npos);
+  EXPECT_NE(error("eos = \"ideal_gas\"", crush + "porosity = 0.3").find("matrix density"),
+            std::string::npos);
+  EXPECT_NE(error(granite, crush + "porosity = 0.3\nporous_sound_speed = \"9 km/s\"")
+                .find("porous_sound_speed"),
+            std::string::npos);
+  const std::string unknown = error(granite, crush + "porosity = 0.3\nalpha_0 = 1.4");
+  EXPECT_NE(unknown.find("alpha_0"), std::string::npos) << unknown;
+  EXPECT_EQ(error(granite, crush + "porosity = 0.3"), "no error");
+}
+
+}  // namespace
+}  // namespace ejecta
