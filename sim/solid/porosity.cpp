@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "sim/eos/eos.hpp"
+#include "sim/state/particles.hpp"
 
 namespace ejecta {
 
@@ -136,6 +137,11 @@ double PalphaModel::returnToCrushCurve(double alpha, double rho, double u,
     if (ga == 0.0) return a;
   }
   return lo;  // on or just below the curve: admissible
+}
+
+const double* distentionColumn(const ParticleSet& p) {
+  const Field* f = p.field(kDistentionField);
+  return f ? p.column(*f, 0).data() : nullptr;
 }
 
 }  // namespace ejecta

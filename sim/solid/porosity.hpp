@@ -24,6 +24,13 @@
 namespace ejecta {
 
 class EquationOfState;
+struct ParticleSet;
+
+// The particle field of the distention (sim/run/packages/porosity_package.hpp declares it).
+inline constexpr const char* kDistentionField = "distention";
+// Its column, or nullptr where the particles carry none (no porous material): the strength of a
+// porous particle is its matrix's over alpha (docs/porosity.md, "Strength of porous material").
+const double* distentionColumn(const ParticleSet& p);
 
 struct PalphaParameters {
   double initialDistention = 1.0;  // alpha_0 = 1 / (1 - porosity)

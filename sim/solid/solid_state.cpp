@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "sim/solid/fracture.hpp"
+#include "sim/solid/porosity.hpp"
 #include "sim/state/tensor.hpp"
 
 namespace ejecta {
@@ -19,6 +20,12 @@ struct FlawActivity {
   std::uint32_t total = 0;
 };
 
+// The shear modulus of particle i: its material's, over its distention where it is porous (the
+// bulk carries the matrix's stress over alpha, as its pressure: docs/porosity.md).
+double shearModulusOf(const Material& mat, std::size_t i, const double* distention) {
+  return distention ? mat.strength->shearModulus / distention[i] : mat.strength->shearModulus;
+}
+
 // The bulk modulus of the intact material, rho c^2 with c the equation of state's sound speed:
 // p.cs holds sqrt(c^2 + 4G/(3 rho)) (applySolidSoundSpeed) and no damage enters either.
 double intactBulkModulus(const ParticleSet& p, std::size_t i, double shearModulus) {
@@ -26,7 +33,7 @@ double intactBulkModulus(const ParticleSet& p, std::size_t i, double shearModulu
 }
 
 FlawActivity flawActivity(const ParticleSet& p, const Material& mat, const FlawSet& flaws,
-                          int dimension, std::size_t i) {
+                          int dimension, std::size_t i, const double* distention) {
   const std::size_t id = static_cast<std::size_t>(p.id[i]);
   if (flaws.empty() || id >= flaws.tableOfId.size() || flaws.tableOfId[id] < 0) return {};
   const FlawTable& table = flaws.tables[static_cast<std::size_t>(flaws.tableOfId[id])];
@@ -51,7 +58,7 @@ FlawActivity flawActivity(const ParticleSet& p, const Material& mat, const FlawS
     tension = std::max(hi, sigma[kZZ]);  // zz (hoop in RZ) is principal too
   }
   if (tension <= 0.0) return a;
-  const double G = mat.strength->shearModulus;
+  const double G = shearModulusOf(mat, i, distention);
   const double strain = tension / ((1.0 - D) * youngsModulus(intactBulkModulus(p, i, G), G));
   a.active = table.activeCount(row, strain);
   return a;
@@ -106,12 +113,14 @@ void applyDamageToTension(ParticleSet& p, const ParticleMask* only) {
 }
 
 void applySolidSoundSpeed(ParticleSet& p, const MaterialTable& materials, const ParticleMask* only) {
+  const double* distention = distentionColumn(p);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.numReal; ++i) {
     if (!selected(only, i)) continue;
     const Material& mat = materials[static_cast<std::size_t>(p.material[i])];
     if (!mat.strength) continue;
-    const double c2 = p.cs[i] * p.cs[i] + 4.0 * mat.strength->shearModulus / (3.0 * p.rho[i]);
+    const double G = shearModulusOf(mat, i, distention);
+    const double c2 = p.cs[i] * p.cs[i] + 4.0 * G / (3.0 * p.rho[i]);
     p.cs[i] = std::sqrt(c2);
   }
 }
@@ -120,6 +129,7 @@ void applyPlasticity(ParticleSet& p, const MaterialTable& materials, bool accumu
                      const ParticleMask* only) {
   const int nc = p.stressComponents();
   if (nc == 0) return;
+  const double* distention = distentionColumn(p);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.numReal; ++i) {
     if (!selected(only, i)) continue;
@@ -127,11 +137,14 @@ void applyPlasticity(ParticleSet& p, const MaterialTable& materials, bool accumu
     if (!mat.strength) continue;
     const StrengthModel& s = *mat.strength;
     const double D = p.damage(i);
+    // A porous particle yields where its matrix does: at the matrix pressure alpha P, the bulk
+    // carrying the matrix's flow stress over alpha.
+    const double alpha = distention ? distention[i] : 1.0;
     const double flow = s.flowStress(p.plasticStrain[i], p.strainRate[i], p.temperature[i],
-                                     mat.thermal.meltTemperature, p.P[i], D);
+                                     mat.thermal.meltTemperature, alpha * p.P[i], D) / alpha;
     SymTensor S;
     for (int c = 0; c < nc; ++c) S[c] = p.stress[c][i];
-    const double dEp = radialReturn(S, flow, s.shearModulus);
+    const double dEp = radialReturn(S, flow, s.shearModulus / alpha);
     if (dEp == 0.0) continue;
     for (int c = 0; c < nc; ++c) p.stress[c][i] = S[c];
     // Only the intact fraction 1 - D yields (applyPlasticity in solid_state.hpp); with a
@@ -143,16 +156,17 @@ void applyPlasticity(ParticleSet& p, const MaterialTable& materials, bool accumu
 void computeCrackGrowth(ParticleSet& p, const MaterialTable& materials, const FlawSet& flaws,
                         int dimension, const ParticleMask* only) {
   if (!p.hasFracture()) return;
+  const double* distention = distentionColumn(p);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.numReal; ++i) {
     if (!selected(only, i)) continue;
     p.dcrack_dt[i] = 0.0;
     const Material& mat = materials[static_cast<std::size_t>(p.material[i])];
     if (mat.fracture.kind != FractureKind::GradyKipp || p.damage(i) >= 1.0) continue;
-    const FlawActivity activity = flawActivity(p, mat, flaws, dimension, i);
+    const FlawActivity activity = flawActivity(p, mat, flaws, dimension, i, distention);
     if (activity.active == 0) continue;
     // c_g = 0.4 c_l of the intact material: undamaged K and G (miluphcuda lowers G by 1 - D).
-    const double G = mat.strength->shearModulus;
+    const double G = shearModulusOf(mat, i, distention);
     const double cl = intactLongitudinalSpeed(intactBulkModulus(p, i, G), G, p.rho[i]);
     p.dcrack_dt[i] = crackGrowthRate(activity.active, activity.total, p.crack[i], cl, p.h[i],
                                      mat.fracture.crackSpeedFactor);
@@ -163,13 +177,14 @@ std::vector<double> crackCaps(const ParticleSet& p, const MaterialTable& materia
                               const FlawSet& flaws, int dimension) {
   std::vector<double> caps(p.numReal, 1.0);
   if (!p.hasFracture()) return caps;
+  const double* distention = distentionColumn(p);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.numReal; ++i) {
     // Only growing cracks need their cap (and the eigenvalues behind it).
     if (!(p.dcrack_dt[i] > 0.0)) continue;
     const Material& mat = materials[static_cast<std::size_t>(p.material[i])];
     if (mat.fracture.kind != FractureKind::GradyKipp) continue;
-    const FlawActivity activity = flawActivity(p, mat, flaws, dimension, i);
+    const FlawActivity activity = flawActivity(p, mat, flaws, dimension, i, distention);
     caps[i] = crackCap(activity.active, activity.total);
   }
   return caps;

@@ -12,6 +12,8 @@
 // gradient), so L_i is also the velocity gradient the stress rate uses.
 #include "sim/sph/hydro_force.hpp"
 
+#include "sim/solid/porosity.hpp"
+
 #include <cmath>
 #include <optional>
 #include <vector>
@@ -84,6 +86,8 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
     fillPressureTerms<RZ, Form>(p, pressureTerm, 0, known);
   }
   const bool artificial = Solid && artificialStress->enabled();
+  // A porous particle's shear modulus is its matrix's over its distention.
+  const double* distention = Solid ? distentionColumn(p) : nullptr;
 
   // Sums particles list[begin, end) (not Listed: begin to end themselves) over their pairs, each
   // into its own derivatives alone. Dynamic chunks balance uneven pair counts. (The loop holds
@@ -193,7 +197,8 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
         if constexpr (RZ) power += stress->hoop[i] * L[2][2] / o.rho;
         dudt += power;
         divergence = L[0][0] + L[1][1] + L[2][2];
-        storeStressRate(p, i, L, ws.shearModulus[p.material[i]]);
+        const double G = ws.shearModulus[p.material[i]];
+        storeStressRate(p, i, L, distention ? G / distention[i] : G);
       } else {
         // P_i/rho_i sum_j w_ij v_ij . grad W = -(P_i/rho_i) (div v)_i
         divergence = -dudtDivergence + hoopRate;

@@ -10,13 +10,14 @@
 #include <vector>
 
 #include "sim/run/physics_package.hpp"
+#include "sim/solid/porosity.hpp"
 #include "sim/sph/sph_options.hpp"
 
 namespace ejecta {
 
 class PorosityPackage : public PhysicsPackage {
  public:
-  static constexpr const char* kDistention = "distention";
+  static constexpr const char* kDistention = kDistentionField;
   static constexpr const char* kDistentionRate = "distention_rate";
 
   PorosityPackage(const MaterialTable& materials, DensityMethod density);
