@@ -22,10 +22,16 @@ struct Finished {
 // The embedded scene scenes/verification/NAME.toml with the options' --set overrides.
 Scene problemScene(const std::string& name, const Options& options);
 
-// Runs the scene with every body's spacing multiplied by `coarsen`; `observer` (optional) sees
-// the simulation after every step.
+// How a convergence study coarsens a scene: the bodies' spacings alone, or also the widths of
+// its Gaussian energy deposits (a source a fixed number of spacings wide at every level).
+enum class Coarsen { Bodies, BodiesAndDeposits };
+
+// Runs the scene with every body's spacing (and, with Coarsen::BodiesAndDeposits, every
+// Gaussian deposit's width) multiplied by `coarsen`; `observer` (optional) sees the simulation
+// after every step.
 Finished runAt(Scene scene, double coarsen, const Options& options,
-               std::function<void(const Simulation&)> observer = {});
+               std::function<void(const Simulation&)> observer = {},
+               Coarsen what = Coarsen::Bodies);
 
 // Writes rows as NAME_nPARTICLES.csv under options.outDir (nothing if it is empty).
 void writeProfile(const Options& options, const std::string& name, const ResolutionRun& run,
@@ -51,6 +57,7 @@ std::vector<Problem> porosityProblems();
 // (optional) sees every step of every run, before that run's measure.
 Report convergenceStudy(const std::string& name, const Options& options, int defaultLevels,
                         const std::function<void(const Scene&, Finished&)>& measure,
-                        const std::function<void(const Simulation&)>& observer = {});
+                        const std::function<void(const Simulation&)>& observer = {},
+                        Coarsen what = Coarsen::Bodies);
 
 }  // namespace ejecta::verify::detail

@@ -40,8 +40,11 @@ Scene problemScene(const std::string& name, const Options& options) {
 // Runs the scene with every body's spacing multiplied by `coarsen`; `observer` (optional) sees
 // the simulation after every step.
 Finished runAt(Scene scene, double coarsen, const Options& options,
-               std::function<void(const Simulation&)> observer) {
+               std::function<void(const Simulation&)> observer, Coarsen what) {
   for (BodySpec& b : scene.bodies) b.spacing *= coarsen;
+  if (what == Coarsen::BodiesAndDeposits)
+    for (EnergyDepositSpec& d : scene.deposits)
+      if (d.profile == DepositProfile::Gaussian) d.width *= coarsen;
   scene.output.snapshots = false;
   const int threads = resolveThreads(options.threads);
   MaterialTable materials = MaterialTable::fromScene(scene);
@@ -80,14 +83,14 @@ Finished runAt(Scene scene, double coarsen, const Options& options,
 
 Report convergenceStudy(const std::string& name, const Options& options, int defaultLevels,
                         const std::function<void(const Scene&, Finished&)>& measure,
-                        const std::function<void(const Simulation&)>& observer) {
+                        const std::function<void(const Simulation&)>& observer, Coarsen what) {
   const Scene scene = problemScene(name, options);
   Report report;
   report.problem = name;
   report.description = scene.description;
   const int levels = options.resolutions > 0 ? options.resolutions : defaultLevels;
   for (int k = levels - 1; k >= 0; --k) {
-    Finished f = runAt(scene, std::pow(2.0, k), options, observer);
+    Finished f = runAt(scene, std::pow(2.0, k), options, observer, what);
     measure(scene, f);
     report.runs.push_back(std::move(f.run));
   }
@@ -309,7 +312,8 @@ BlastShock blastShock(const ParticleSet& p, const std::array<double, 3>& centre,
 // step at or after each), for the radius-against-time record of `ejecta verify --out`.
 constexpr int kHistorySamples = 24;
 
-Report sedov(const std::string& name, const Options& options, int defaultLevels) {
+Report sedov(const std::string& name, const Options& options, int defaultLevels,
+             Coarsen what = Coarsen::Bodies) {
   std::vector<std::array<double, 2>> history;  // (t, shock radius) of the run in progress
   double nextSample = -1.0;  // < 0: the run has not started
   auto observer = [&](const Simulation& sim) {
@@ -379,7 +383,7 @@ Report sedov(const std::string& name, const Options& options, int defaultLevels)
                  radii);
     history.clear();
     nextSample = -1.0;
-  }, observer);
+  }, observer, what);
 }
 
 }  // namespace
@@ -389,6 +393,8 @@ const std::vector<Problem>& problems() {
       {"sod_1d", "Sod shock tube, 1D, t = 0.2 s, against the exact Riemann solution", 3, sod1d},
       {"sod_2d", "Sod, 2D circular (the seed's case: r = 0.4 m, t = 0.25 s), against the converged radial solution", 3, sod2d},
       {"plate_impact_al", "Al-2024 plate impact at 2 km/s, 1D: shock speed and pressure against the Hugoniot", 1, plateImpact},
+      {"sedov_1d", "Sedov-Taylor blast, 1D (plane blast), the deposit two spacings wide at every level", 3,
+       [](const Options& o) { return sedov("sedov_1d", o, 3, Coarsen::BodiesAndDeposits); }},
       {"sedov_2d", "Sedov-Taylor blast, 2D planar (cylindrical blast), against the similarity solution", 2,
        [](const Options& o) { return sedov("sedov_2d", o, 2); }},
       {"sedov_rz", "Sedov-Taylor blast, RZ (spherical blast), the seed's case", 2,
