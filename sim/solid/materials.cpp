@@ -139,6 +139,9 @@ std::optional<PalphaModel> makePorosity(const MaterialSpec& spec, const Equation
   p.elasticPressure = *t.find("elastic_pressure");
   p.solidPressure = *t.find("solid_pressure");
   p.crushExponent = valueOr(t, "crush_exponent", p.crushExponent);
+  p.transitionPressure = valueOr(t, "transition_pressure", p.transitionPressure);
+  p.transitionDistention = valueOr(t, "transition_distention", p.transitionDistention);
+  p.transitionExponent = valueOr(t, "transition_exponent", p.transitionExponent);
   p.solidDensity = valueOr(t, "solid_density", eos.referenceDensity());
   if (p.solidDensity > 0.0) p.solidSoundSpeed = eos.soundSpeed(p.solidDensity, 0.0);
   p.porousSoundSpeed = valueOr(t, "porous_sound_speed", p.solidSoundSpeed);

@@ -115,7 +115,8 @@ const ModelFamily& porosityModelFamily() {
                     "P-alpha (Herrmann 1969; Jutzi, Benz & Michel 2008): the distention falls "
                     "along a crush curve in pressure",
                     {"porosity", "initial_distention", "elastic_pressure", "solid_pressure",
-                     "crush_exponent", "solid_density", "porous_sound_speed",
+                     "crush_exponent", "transition_pressure", "transition_distention",
+                     "transition_exponent", "solid_density", "porous_sound_speed",
                      "max_distention_change"}}},
                   {}};
     f.keys = {
@@ -128,6 +129,10 @@ const ModelFamily& porosityModelFamily() {
         quantity("solid_pressure", Dimension::Pressure, "required",
                  "Ps: fully compacted (α = 1)"),
         number("crush_exponent", "2", "n of the crush curve α = 1 + (αe − 1)((Ps − P)/(Ps − Pe))^n"),
+        quantity("transition_pressure", Dimension::Pressure, "solid_pressure",
+                 "Pt of the two-segment curve (docs/porosity.md)"),
+        number("transition_distention", "αe (one segment)", "αt of the two-segment curve, in [1, αe]"),
+        number("transition_exponent", "2", "n1 of the two-segment curve's first segment"),
         quantity("solid_density", Dimension::Density, "the eos reference density",
                  "ρ_s0: the matrix's density at P = 0"),
         quantity("porous_sound_speed", Dimension::Velocity, "the matrix's (rigid pores below Pe)",

@@ -27,6 +27,10 @@ PalphaModel::PalphaModel(const PalphaParameters& parameters) : par_(parameters) 
   if (!(p.solidPressure > p.elasticPressure))
     fail("solid_pressure must exceed elastic_pressure (compaction runs from Pe to Ps)");
   if (!(p.crushExponent >= 1.0)) fail("crush_exponent must be at least 1");
+  if (p.transitionPressure == 0.0) par_.transitionPressure = p.solidPressure;
+  if (!(par_.transitionPressure > p.elasticPressure && par_.transitionPressure <= p.solidPressure))
+    fail("transition_pressure must lie in (elastic_pressure, solid_pressure]");
+  if (!(p.transitionExponent >= 1.0)) fail("transition_exponent must be at least 1");
   if (!(p.solidDensity > 0.0))
     fail("no matrix density: give solid_density, or a matrix eos with a reference density "
          "(tillotson, mie_gruneisen)");
@@ -47,6 +51,9 @@ PalphaModel::PalphaModel(const PalphaParameters& parameters) : par_(parameters) 
   if (!(alphaE_ > 1.0))
     fail("the pores close elastically before elastic_pressure (alpha_e <= 1): lower "
          "elastic_pressure or raise porous_sound_speed");
+  alphaT_ = p.transitionDistention < 0.0 ? alphaE_ : p.transitionDistention;
+  if (!(alphaT_ >= 1.0 && alphaT_ <= alphaE_))
+    fail("transition_distention must lie in [1, alpha_e = " + std::to_string(alphaE_) + "]");
 }
 
 double PalphaModel::elasticDistentionAtPe(double alphaE) const {
@@ -71,7 +78,12 @@ double PalphaModel::crushDistention(double P) const {
   if (P <= p.elasticPressure) return alphaE_;
   if (P >= p.solidPressure) return 1.0;
   const double x = (p.solidPressure - P) / (p.solidPressure - p.elasticPressure);
-  return 1.0 + (alphaE_ - 1.0) * std::pow(x, p.crushExponent);
+  double alpha = 1.0 + (alphaT_ - 1.0) * std::pow(x, p.crushExponent);
+  if (P < p.transitionPressure && alphaE_ > alphaT_) {
+    const double y = (p.transitionPressure - P) / (p.transitionPressure - p.elasticPressure);
+    alpha += (alphaE_ - alphaT_) * std::pow(y, p.transitionExponent);
+  }
+  return alpha;
 }
 
 double PalphaModel::crushSlope(double P) const {
@@ -79,7 +91,13 @@ double PalphaModel::crushSlope(double P) const {
   if (P < p.elasticPressure || P >= p.solidPressure) return 0.0;
   const double span = p.solidPressure - p.elasticPressure;
   const double x = (p.solidPressure - P) / span;
-  return -p.crushExponent * (alphaE_ - 1.0) * std::pow(x, p.crushExponent - 1.0) / span;
+  double slope = -p.crushExponent * (alphaT_ - 1.0) * std::pow(x, p.crushExponent - 1.0) / span;
+  if (P < p.transitionPressure && alphaE_ > alphaT_) {
+    const double spanT = p.transitionPressure - p.elasticPressure;
+    const double y = (p.transitionPressure - P) / spanT;
+    slope -= p.transitionExponent * (alphaE_ - alphaT_) * std::pow(y, p.transitionExponent - 1.0) / spanT;
+  }
+  return slope;
 }
 
 double PalphaModel::elasticSlope(double alpha) const {

@@ -5,7 +5,11 @@
 // its pressure is the matrix's over alpha, P = P_s(alpha rho, u) / alpha, and alpha falls along
 // a crush curve as the material is loaded past the elastic limit Pe, to 1 (fully compacted) at
 // Ps (JBM08's quadratic, n = 2):
-//   alpha(P) = 1 + (alpha_e - 1) ((Ps - P) / (Ps - Pe))^n,   Pe <= P < Ps.
+//   alpha(P) = 1 + (alpha_e - 1) ((Ps - P) / (Ps - Pe))^n,   Pe <= P < Ps,
+// or the two-segment curve that Spheral and miluphcuda implement for strongly porous material
+// (pumice; attributed to Jutzi et al. 2009, whose text was not read), with a transition at Pt:
+//   alpha(P) = 1 + (alpha_e - alpha_t) ((Pt - P)/(Pt - Pe))^n1 [P < Pt]
+//                + (alpha_t - 1) ((Ps - P)/(Ps - Pe))^n2.
 // Below Pe, and on unloading, the pores deform elastically:
 //   dalpha/dP = alpha^2 / K_s (1 - 1/h^2),  h = 1 + (alpha - 1)(c_e - c_s) / (c_s (alpha_e - 1)),
 // with K_s = rho_s0 c_s^2 the matrix's bulk modulus and c_e the porous material's sound speed at
@@ -36,7 +40,12 @@ struct PalphaParameters {
   double initialDistention = 1.0;  // alpha_0 = 1 / (1 - porosity)
   double elasticPressure = 0.0;    // Pe [Pa]: plastic compaction begins
   double solidPressure = 0.0;      // Ps [Pa]: fully compacted (alpha = 1)
-  double crushExponent = 2.0;      // n of the crush curve (JBM08: 2)
+  double crushExponent = 2.0;      // n (n2) of the crush curve (JBM08: 2)
+  // The two-segment curve (below); with transitionDistention = alpha_e (the default, < 0 here
+  // meaning "alpha_e") its first segment vanishes and the curve is JBM08's.
+  double transitionPressure = 0.0;     // Pt [Pa]; 0: Ps
+  double transitionDistention = -1.0;  // alpha_t; < 0: alpha_e
+  double transitionExponent = 2.0;     // n1
   double solidDensity = 0.0;       // rho_s0 [kg/m^3]: the matrix's reference density
   double solidSoundSpeed = 0.0;    // c_s [m/s]: the matrix's sound speed at rho_s0, u = 0
   double porousSoundSpeed = 0.0;   // c_e [m/s]: the porous material's at alpha_0
@@ -54,6 +63,7 @@ class PalphaModel {
   double initialDistention() const { return par_.initialDistention; }
   // alpha_e: where the crush curve starts, at P = Pe.
   double elasticDistention() const { return alphaE_; }
+  double transitionDistention() const { return alphaT_; }
 
   // The crush curve: alpha_e for P <= Pe, 1 for P >= Ps.
   double crushDistention(double P) const;
@@ -87,6 +97,7 @@ class PalphaModel {
   PalphaParameters par_;
   double bulkModulus_ = 0.0;  // K_s = rho_s0 c_s^2
   double alphaE_ = 1.0;
+  double alphaT_ = 1.0;       // the transition distention (alpha_e: one segment)
 };
 
 }  // namespace ejecta

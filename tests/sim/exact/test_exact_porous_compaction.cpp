@@ -70,6 +70,22 @@ TEST(ExactPorousCompaction, PartialCompactionEndsOnTheCrushCurve) {
   expectJump(w.elastic, b, w.shockSpeed);
 }
 
+// The two-segment curve (alpha_t, Pt, n1) closes the jump the same way.
+TEST(ExactPorousCompaction, TwoSegmentCurveEndsOnItself) {
+  const Tillotson matrix = aluminium();
+  PalphaParameters p = jutziAluminium(matrix).parameters();
+  p.transitionPressure = 0.3e9;
+  p.transitionDistention = 1.15;
+  p.transitionExponent = 4.0;
+  const PalphaModel model(p);
+  const exact::CompactionWave w = exact::compactionWave(matrix, model, 150.0);
+  const exact::PorousState& b = w.compacted;
+  EXPECT_GT(b.alpha, 1.0);
+  EXPECT_DOUBLE_EQ(b.alpha, model.crushDistention(b.P));
+  EXPECT_NEAR(b.alpha * b.P, matrix.pressure(b.alpha * b.rho, b.u), 1e-9 * b.alpha * b.P);
+  expectJump(w.elastic, b, w.shockSpeed);
+}
+
 // Nearly no pores: the wave is the matrix's own shock, Us = C0 + s up on the Mie-Grueneisen
 // Hugoniot of Al-2024 (Steinberg 1996): 6666 m/s at 1 km/s.
 TEST(ExactPorousCompaction, WithoutPoresIsTheMatrixHugoniot) {

@@ -161,6 +161,7 @@ TEST(SceneKeyReference, DefaultsAreTheCodes) {
       {"materials[].fracture", "max_crack_increment", fracture.maxCrackIncrement},
       {"materials[].fracture", "seed", static_cast<double>(fracture.seed)},
       {"materials[].porosity", "crush_exponent", porosity.crushExponent},
+      {"materials[].porosity", "transition_exponent", porosity.transitionExponent},
       {"materials[].porosity", "max_distention_change", porosity.maxChangePerStep},
   };
   for (const auto& [path, key, code] : cases)

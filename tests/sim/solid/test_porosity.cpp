@@ -45,6 +45,41 @@ TEST(PalphaModel, CrushCurveRunsFromTheElasticLimitToFullCompaction) {
   EXPECT_EQ(m.crushSlope(0.8e9), 0.0);
 }
 
+// The two-segment curve on round pumice-like numbers (alpha_0 = 3 with rigid pores, so
+// alpha_e = 3; alpha_t = 1.9, Pe = 1 MPa, Pt = 68 MPa, Ps = 213 MPa, n1 = 12, n2 = 3).
+TEST(PalphaModel, TwoSegmentCrushCurve) {
+  PalphaParameters p = jutziAluminium();
+  p.initialDistention = 3.0;
+  p.porousSoundSpeed = p.solidSoundSpeed;
+  p.elasticPressure = 1e6;
+  p.transitionPressure = 68e6;
+  p.solidPressure = 213e6;
+  p.transitionDistention = 1.9;
+  p.transitionExponent = 12.0;
+  p.crushExponent = 3.0;
+  const PalphaModel m(p);
+  EXPECT_DOUBLE_EQ(m.crushDistention(1e6), 3.0);
+  // Halfway to Pt: 1 + 1.1 (1/2)^12 + 0.9 ((213 - 34.5)/212)^3.
+  EXPECT_NEAR(m.crushDistention(34.5e6), 1.0 + 1.1 / 4096.0 + 0.9 * std::pow(178.5 / 212.0, 3), 1e-14);
+  // At and past Pt only the second segment: 1 + 0.9 (145/212)^3.
+  EXPECT_NEAR(m.crushDistention(68e6), 1.0 + 0.9 * std::pow(145.0 / 212.0, 3), 1e-14);
+  EXPECT_DOUBLE_EQ(m.crushDistention(213e6), 1.0);
+  for (double P : {5e6, 40e6, 100e6, 200e6}) {
+    const double dP = 1e2;
+    const double fd = (m.crushDistention(P + dP) - m.crushDistention(P - dP)) / (2.0 * dP);
+    EXPECT_NEAR(m.crushSlope(P), fd, 1e-7 * std::abs(fd)) << P;
+  }
+  // With alpha_t = alpha_e the first segment vanishes: JBM08's curve.
+  p.transitionDistention = -1.0;
+  const PalphaModel single(p);
+  EXPECT_NEAR(single.crushDistention(34.5e6), 1.0 + 2.0 * std::pow(178.5 / 212.0, 3), 1e-14);
+  p.transitionDistention = 3.5;
+  EXPECT_THROW(PalphaModel{p}, std::invalid_argument);
+  p.transitionDistention = 1.9;
+  p.transitionPressure = 300e6;
+  EXPECT_THROW(PalphaModel{p}, std::invalid_argument);
+}
+
 TEST(PalphaModel, RigidPoresKeepTheirDistentionBelowTheElasticLimit) {
   PalphaParameters p = jutziAluminium();
   p.porousSoundSpeed = p.solidSoundSpeed;
