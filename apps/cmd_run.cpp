@@ -13,6 +13,8 @@
 #include "coupling/run_images.hpp"
 #include "coupling/run_thermal.hpp"
 #include "fields/crater_summary.hpp"
+#include "fields/fragment_outputs.hpp"
+#include "fields/shield_outputs.hpp"
 #include "fields/run_outputs.hpp"
 #include "sim/setup/embedded_scenes.hpp"
 #include "sim/run/run.hpp"
@@ -72,6 +74,8 @@ void printThermal(const ThermalSummary& thermal) {
 // What the fields/ and thermal hooks hand back at the end of the run, for the printed summary.
 struct HookResults {
   std::optional<fields::CraterSummary> crater;
+  std::optional<fields::ShieldSummary> shield;
+  std::optional<fields::FragmentSummary> fragments;
   std::optional<ThermalSummary> thermal;
 };
 
@@ -111,6 +115,20 @@ void printSummary(const RunOutcome& r, const HookResults& hooks, const std::stri
     else if (!c->note.empty())
       std::printf("  crater: none measured (%s)\n", c->note.c_str());
   }
+  // The Whipple shield's verdict (fields/shield_outputs.hpp) and the fragments.
+  if (const auto& sh = hooks.shield) {
+    std::printf("  Whipple shield: %s\n", fields::describeVerdict(*sh).c_str());
+    std::printf("  debris cloud: %.4g g moving at up to %.3g km/s, %.3g mm beyond the bumper, "
+                "%.3g mm wide (half-angle %.3g deg); %.4g g on the wall\n",
+                sh->cloud.mass * 1e3, sh->cloud.leadingSpeed * 1e-3, sh->cloud.leadingEdge * 1e3,
+                2 * sh->cloud.radius * 1e3, sh->cloud.halfAngle * 180 / 3.14159265358979323846,
+                sh->cloud.massOnWall * 1e3);
+  }
+  if (const auto& f = hooks.fragments)
+    std::printf("  fragments: %zu (%zu measured, %zu single failed particles); the largest %.4g kg "
+                "(%.3g%% of the mass, %.3g mm); sizes below %.3g mm are not measured\n",
+                f->fragments, f->resolved, f->failedParticles, f->largestMass,
+                100 * f->largestMassFraction, f->largestDiameter * 1e3, f->resolutionLimit * 1e3);
   if (r.ledger.source) printSource(*r.ledger.source);
   if (hooks.thermal) printThermal(*hooks.thermal);
   // One line per gauge: the pulse it recorded (sim/run/gauge_summary.hpp).
@@ -126,13 +144,15 @@ void printSummary(const RunOutcome& r, const HookResults& hooks, const std::stri
   }
   if (!outDir.empty()) {
     const fs::path dir(outDir);
-    std::printf("  outputs: %s/{summary.json, energy.csv, snapshots.xdmf, snapshots/%s%s%s%s%s%s}\n",
+    std::printf("  outputs: %s/{summary.json, energy.csv, snapshots.xdmf, snapshots/%s%s%s%s%s%s%s%s}\n",
                 outDir.c_str(), fs::is_directory(dir / "fields") ? ", fields/" : "",
                 hooks.thermal && hooks.thermal->governing ? ", thermal_*/" : "",
                 fs::is_directory(dir / "images") ? ", images/" : "",
                 fs::exists(dir / "gauges.csv") ? ", gauges.csv" : "",
                 fs::exists(dir / "crater_profile.csv") ? ", crater_profile.csv" : "",
-                fs::exists(dir / "crater_history.csv") ? ", crater_history.csv" : "");
+                fs::exists(dir / "crater_history.csv") ? ", crater_history.csv" : "",
+                fs::exists(dir / "shield_history.csv") ? ", shield_history.csv" : "",
+                fs::exists(dir / "fragments.csv") ? ", fragments.csv, size_frequency.csv" : "");
     if (s.has("charts"))
       std::printf("  charts: %s\n", s.text("charts").c_str());
     else if (s.has("charts_note"))
@@ -167,6 +187,8 @@ void prepareOutputDirectory(const std::string& outDir, bool overwrite) {
 
 void addInSituOutputs(const Scene& scene, RunOptions& options, bool charts) {
   fields::addFieldOutputs(options, scene);
+  fields::addShieldOutputs(options, scene);
+  fields::addFragmentOutputs(options, scene);
   addImageOutputs(options, scene, charts);
   addThermalOutputs(options, scene, charts);
 }
@@ -187,6 +209,8 @@ int runCommand(const RunArgs& args) {
   auto hooks = std::make_shared<HookResults>();
   options.configure = [charts = args.charts, hooks](const Scene& scene, RunOptions& o) {
     fields::addFieldOutputs(o, scene, [hooks](const fields::CraterSummary& c) { hooks->crater = c; });
+    fields::addShieldOutputs(o, scene, [hooks](const fields::ShieldSummary& s) { hooks->shield = s; });
+    fields::addFragmentOutputs(o, scene, [hooks](const fields::FragmentSummary& f) { hooks->fragments = f; });
     addImageOutputs(o, scene, charts);
     addThermalOutputs(o, scene, charts, [hooks](const ThermalSummary& t) { hooks->thermal = t; });
   };

@@ -2,6 +2,7 @@
 // The ejecta subcommands, each a thin shell over the libraries. main.cpp parses the command line
 // (CLI11 lives there and in cli_reference.cpp, which writes the manual page and the completion
 // from the same definition) and calls these.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -125,6 +126,30 @@ struct WhippleArgs {
   bool json = false;                   // print whipple.json to stdout
 };
 int whippleCommand(const WhippleArgs& args);
+
+struct FragmentsArgs {
+  std::string input;                   // SNAPSHOT.h5 or RUN_DIR (its last snapshot)
+  std::string outDir;                  // default RUN_DIR/fragments_analysis
+  std::optional<double> linkFactor, damageThreshold, resolvedSpacings;  // default: the scene's
+  std::string follower;                // a thermal study (file or shipped name): the approach
+  std::string shield;                  // a Whipple study (file or shipped name): its [shield]
+  bool json = false;
+  bool charts = true;
+};
+int fragmentsCommand(const FragmentsArgs& args);
+
+struct WhippleLimitArgs {
+  std::string scene;                   // a [shield] scene: file or shipped name
+  std::vector<std::string> speeds;     // "3 km/s", ...
+  std::vector<std::string> diameters;  // the starting bracket: two lengths
+  int iterations = 4;
+  std::vector<std::string> overrides;  // --set, every shot
+  std::string outDir;                  // default runs/<scene name>_limit
+  std::string wallYield;               // "330 MPa"; empty: the wall material's
+  int threads = 0;
+  bool charts = true;
+};
+int whippleLimitCommand(const WhippleLimitArgs& args);
 
 struct UndexReferenceArgs {
   std::string scene;                   // SCENE.toml: a centred charge in one inert medium

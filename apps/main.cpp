@@ -181,6 +181,35 @@ int main(int argc, char** argv) {
   whippleCmd->add_option("--out,-o", whippleArgs.outDir, "Output directory (default runs/<name>)");
   whippleCmd->add_flag("--json", whippleArgs.json, "Print whipple.json");
 
+  ejecta::app::WhippleLimitArgs limitArgs;
+  CLI::App* limitCmd = app.add_subcommand("whipple-limit", "Ballistic limit of a Whipple-shield scene by simulation: bisect the projectile diameter at each speed, against Christiansen's equations");
+  limitCmd->add_option("scene", limitArgs.scene, "Scene with a [shield] table (file or shipped name, e.g. whipple_sph/emi_71)")->required();
+  limitCmd->add_option("--speeds", limitArgs.speeds, "Impact speeds, e.g. \"3 km/s,5 km/s,7 km/s\"")->delimiter(',')->required();
+  limitCmd->add_option("--diameters", limitArgs.diameters, "Starting bracket of projectile diameters, e.g. \"2 mm,12 mm\"")->delimiter(',')->required();
+  limitCmd->add_option("--iterations", limitArgs.iterations, "Bisections after the two ends (default 4)")
+      ->check(CLI::Range(0, 30));
+  limitCmd->add_option("--set", limitArgs.overrides, "Override a scene key for every shot (e.g. a coarser spacing)")->take_all();
+  limitCmd->add_option("--out,-o", limitArgs.outDir, "Output directory (default runs/<scene name>_limit)");
+  limitCmd->add_option("--wall-yield", limitArgs.wallYield, "The rear wall's yield stress for the equations (default: the wall material's Johnson-Cook A)");
+  limitCmd->add_option("--threads,-j", limitArgs.threads, "OpenMP threads")->check(countPerCore("--threads"));
+  limitCmd->add_flag("!--no-charts", limitArgs.charts, "Write the CSVs but draw no chart");
+
+  ejecta::app::FragmentsArgs fragmentsArgs;
+  CLI::App* fragmentsCmd = app.add_subcommand("fragments", "Fragments of a snapshot (friends-of-friends split by damage), and the debris a follower meets");
+  fragmentsCmd->add_option("input", fragmentsArgs.input, "Snapshot (.h5) or run directory (its last snapshot)")->required();
+  fragmentsCmd->add_option("--out,-o", fragmentsArgs.outDir, "Output directory (default RUN_DIR/fragments_analysis)");
+  fragmentsCmd->add_option("--link-factor", fragmentsArgs.linkFactor, "Friends within F (h_i + h_j) / 2 (default: the scene's, 2)")
+      ->check(CLI::Range(1e-3, 100.0));
+  fragmentsCmd->add_option("--damage-threshold", fragmentsArgs.damageThreshold, "Failed at or above this damage (default: the scene's, 0.99)")
+      ->check(CLI::Range(1e-6, 1e6));
+  fragmentsCmd->add_option("--resolved-spacings", fragmentsArgs.resolvedSpacings, "Sizes measured from this many spacings (default 4)")
+      ->check(CLI::Range(1e-3, 1e6));
+  fragmentsCmd->add_option("--follower", fragmentsArgs.follower, "Thermal study (file or shipped name, e.g. thermal/follower): the spacecraft's approach from the snapshot's time");
+  fragmentsCmd->add_option("--shield", fragmentsArgs.shield, "Whipple study (file or shipped name, e.g. whipple/haiv): the shield the fragments met must pass")
+      ->needs(fragmentsCmd->get_option("--follower"));
+  fragmentsCmd->add_flag("--json", fragmentsArgs.json, "Print fragments.json");
+  fragmentsCmd->add_flag("!--no-charts", fragmentsArgs.charts, "Write the CSVs but draw no charts");
+
   ejecta::app::UndexReferenceArgs undexArgs;
   CLI::App* undexCmd = app.add_subcommand("undex-reference", "Converged 1D Lagrangian reference of a centred charge's gauges (docs/undex.md)");
   undexCmd->add_option("scene", undexArgs.scene, "Scene file (TOML): one explosive body centred on its detonation, one inert body")->required();
@@ -194,7 +223,7 @@ int main(int argc, char** argv) {
   keysCmd->add_flag("--markdown", keysArgs.markdown, "The key reference of docs/scenes.md (Markdown)");
   keysCmd->add_option("--write", keysArgs.write, "Replace the reference between the markers of this file (docs/scenes.md)");
 
-  for (CLI::App* command : {fieldsCmd, craterCmd, sweepCmd, vfCmd, thermalCmd, renderCmd, whippleCmd, undexCmd})
+  for (CLI::App* command : {fieldsCmd, craterCmd, sweepCmd, vfCmd, thermalCmd, renderCmd, whippleCmd, fragmentsCmd, undexCmd})
     addThreads(command);
 
   ejecta::app::ScenesArgs scenesArgs;
@@ -248,6 +277,8 @@ int main(int argc, char** argv) {
     if (*thermalCmd) return ejecta::app::thermalCommand(thermalArgs);
     if (*renderCmd) return ejecta::app::renderCommand(renderArgs);
     if (*whippleCmd) return ejecta::app::whippleCommand(whippleArgs);
+    if (*fragmentsCmd) return ejecta::app::fragmentsCommand(fragmentsArgs);
+    if (*limitCmd) return ejecta::app::whippleLimitCommand(limitArgs);
     if (*undexCmd) return ejecta::app::undexReferenceCommand(undexArgs);
     if (*keysCmd) return ejecta::app::keysCommand(keysArgs);
     if (*scenesCmd) return ejecta::app::scenesCommand(scenesArgs);
@@ -264,6 +295,8 @@ int main(int argc, char** argv) {
                                                                         : thermalArgs.scene + " --from " + thermalArgs.from)
                               : *renderCmd  ? renderArgs.input
                               : *whippleCmd ? whippleArgs.shield
+                              : *fragmentsCmd ? fragmentsArgs.input
+                              : *limitCmd   ? limitArgs.scene
                               : *undexCmd   ? undexArgs.scene
                               : *scenesCmd  ? scenesArgs.show
                                             : std::string();

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "fields/crater.hpp"
+#include "fields/history_csv.hpp"
 
 namespace ejecta::fields {
 
@@ -31,13 +32,11 @@ class CraterHistory {
   // as a crater history of the same kind (planar or not).
   void record(double time, const CraterMetrics& m);
 
-  const std::vector<std::string>& rows() const { return rows_; }
+  const std::vector<std::string>& rows() const { return history_.rows(); }
 
  private:
-  std::filesystem::path file_;
+  HistoryCsv history_;
   bool planar_;
-  bool started_ = false;
-  std::vector<std::string> rows_;
 };
 
 // Rows of an existing history file whose time is below `before` [s] (none if there is no

@@ -13,8 +13,6 @@
 
 namespace ejecta::radiation {
 
-namespace {
-
 TriangleMesh buildShape(const SurfaceShape& s, const std::string& source) {
   using K = SurfaceShape::Kind;
   switch (s.kind) {
@@ -32,6 +30,8 @@ TriangleMesh buildShape(const SurfaceShape& s, const std::string& source) {
   }
   return {};
 }
+
+namespace {
 
 // Lattice points of an emitter region (spacing s, centred on the region).
 std::vector<Vec3> latticePoints(const EmitterSpec& e) {

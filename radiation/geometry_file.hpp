@@ -45,6 +45,10 @@ struct SurfaceShape {
   double scale = 1.0;               // mesh file units to m
 };
 
+// The triangles of a shape, in its own frame (a spacecraft body: centred on the body origin).
+// `source` names the file in messages (a mesh file that cannot be read).
+TriangleMesh buildShape(const SurfaceShape& s, const std::string& source);
+
 struct SpacecraftSpec {
   SurfaceShape body;
   Pose pose;

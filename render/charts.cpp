@@ -83,6 +83,10 @@ std::string chartSpecJson(const ChartSpec& spec) {
   for (std::size_t i = 0; i < spec.hlines.size(); ++i)
     json += (i ? ", " : "") + std::string("{\"y\": ") + jsonNumber(spec.hlines[i].y, 17) +
             ", \"label\": " + jsonString(spec.hlines[i].label) + "}";
+  json += "],\n  \"vlines\": [";
+  for (std::size_t i = 0; i < spec.vlines.size(); ++i)
+    json += (i ? ", " : "") + std::string("{\"x\": ") + jsonNumber(spec.vlines[i].y, 17) +
+            ", \"label\": " + jsonString(spec.vlines[i].label) + "}";
   json += "],\n";
   json += "  \"note\": " + jsonString(spec.note) + ",\n";
   json += "  \"out\": " + path(spec.out) + ",\n";

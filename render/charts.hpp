@@ -28,7 +28,8 @@ struct ChartSeries {
   bool negate = false;          // plot -y: a depth drawn downward below a surface at 0
 };
 
-// A horizontal line across a line chart: the pre-impact surface, a limit.
+// A horizontal line across a line chart (the pre-impact surface, a limit), or a vertical one
+// (a resolution limit): `y` is its place on the axis it crosses.
 struct ChartLine {
   double y = 0.0;
   std::string label{};
@@ -43,6 +44,7 @@ struct ChartSpec {
   std::string xlabel{}, ylabel{}, title{};  // labels with units, e.g. "t [s]"; an x label in
                                             // [s] is shown in ms or us when the times are short
   std::vector<ChartLine> hlines{};          // dashed grey lines
+  std::vector<ChartLine> vlines{};          // dashed grey vertical lines, at x = ChartLine::y
   std::string note{};                       // a line of text in the middle of the axes: "no
                                             // coating needed" where the bars are all zero
   std::filesystem::path out{};              // the PNG

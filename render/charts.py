@@ -24,7 +24,8 @@ one line per wall_thickness_m (speed in km/s, critical diameter in mm), the regi
 found in the regime column as dotted lines, and the threat, if given, as a marker. The column
 names may be changed with "group", "x", "y" and "regime".
 A series may name its own csv and x column; "negate": plot -y (a depth downward). The spec may add
-"hlines" ([{"y": 0, "label": "pre-impact surface"}], dashed grey) and "note" (a line of text in the middle of the axes, e.g. "no
+"hlines" ([{"y": 0, "label": "pre-impact surface"}], dashed grey), "vlines" ([{"x": 1e-3,
+"label": "resolution"}], dotted grey) and "note" (a line of text in the middle of the axes, e.g. "no
 coating needed" over all-zero bars). An x label ending in "[s]" is shown in ms or us (the
 values scaled) when every time is below 2 s or 2 ms. "reference": a dashed black line (an exact
 solution). "markers": points joined by lines (a convergence study). "points": small dots, no
@@ -194,6 +195,9 @@ def draw(spec, base):
     for line in spec.get("hlines") or []:
         axes.axhline(float(line.get("y", 0.0)), color="0.45", linestyle="--", linewidth=1.2,
                      label=line.get("label") or None, zorder=1)
+    for line in spec.get("vlines") or []:
+        axes.axvline(float(line.get("x", 0.0)), color="0.45", linestyle=":", linewidth=1.4,
+                     label=line.get("label") or None, zorder=1)
     if spec.get("note"):
         axes.text(0.5, 0.5, spec["note"], transform=axes.transAxes, ha="center", va="center",
                   fontsize=14, color="0.25",
@@ -203,7 +207,7 @@ def draw(spec, base):
     if spec.get("title"):
         axes.set_title(spec["title"])
     axes.grid(True, which="major", alpha=0.3)
-    if len(series) > 1 or any(entry.get("label") for entry in series) or spec.get("hlines"):
+    if len(series) > 1 or any(entry.get("label") for entry in series) or spec.get("hlines") or spec.get("vlines"):
         axes.legend()
     figure.tight_layout()
     save_figure(figure, out, base, dpi)

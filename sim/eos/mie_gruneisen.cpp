@@ -61,9 +61,10 @@ const std::vector<ShockMaterial>& library() {
        "Steinberg (1996), UCRL-MA-106439, 2024 Al: rho0 2.785 g/cc, C0 0.5328 cm/us, S1 1.338, "
        "gamma0 2.00, b 0.48; not verified against the report in this session"},
       // Al-1100: the seed gives only the density (2701) and reuses the 2024 numbers.
-      {"Al-1100", 2701.0, 5386.0, 1.339, 0.0, 0.0, 2.00, 0.0,
-       "UNVERIFIED: rho0 from seed Table 5.1; C0 5.386 km/s, s 1.339 as recalled from the "
-       "LASL compendium (Marsh 1980) 1100 Al fit; gamma0 2.0 as the seed; no a"},
+      {"Al-1100", 2707.0, 5386.0, 1.339, 0.0, 0.0, 1.97, 0.48,
+       "Steinberg (1996), UCRL-MA-106439, 1100-O Al: rho0 2.707 g/cc, C0 0.5386 cm/us, S1 1.339, "
+       "gamma0 1.97, b 0.48; read in a transcription of the table (FronTier's mg-eos.c), not in "
+       "the report itself"},
       {"copper", 8930.0, 3940.0, 1.489, 0.0, 0.0, 2.02, 0.47,
        "Steinberg (1996), UCRL-MA-106439, OFHC Cu: rho0 8.93, C0 0.394 cm/us, S1 1.489, gamma0 "
        "2.02, b 0.47; C0, S1, b agree with the Altair Radioss /EOS/GRUNEISEN copper example "

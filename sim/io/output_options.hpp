@@ -40,6 +40,25 @@ struct CraterAnalysisOptions {
   double resolution = 0.0;              // [m]; 0 = half the median smoothing length
 };
 
+// [fragments]: fragment identification at the end of the run and at chosen outputs
+// (fields/fragments.hpp, docs/fragments.md).
+struct FragmentAnalysisOptions {
+  bool enabled = false;                 // the scene has a [fragments] table
+  double linkFactor = 2.0;              // friends within linkFactor (h_i + h_j) / 2
+  double damageThreshold = 0.99;        // failed particles link to nobody
+  double resolvedSpacings = 4.0;        // sizes below this many spacings are not measured
+  int every = 0;                        // also with every Nth snapshot; 0 = at the end only
+};
+
+// [shield]: a Whipple shield's perforation verdict, rear-wall deflection and debris cloud
+// (fields/shield_analysis.hpp, docs/whipple.md).
+struct ShieldAnalysisOptions {
+  bool enabled = false;                 // the scene has a [shield] table
+  std::string wall;                     // the rear wall's body (a box, its material its own)
+  std::string bumper;                   // the bumper's body (a box); empty: none
+  double damageThreshold = 0.99;        // wall particles at or above it have failed
+};
+
 // [images.camera]: where a 3D picture is taken from (a perspective camera). The ejecta 3D scenes
 // have the target's surface normal along +z, so z is up unless the scene says otherwise.
 struct ImageCamera {

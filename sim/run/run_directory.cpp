@@ -19,12 +19,14 @@ bool isSnapshotName(const std::string& name) {
 }
 
 // Top-level files and directories a run writes (sim/run/run.cpp, fields/run_outputs.cpp,
+// fields/shield_outputs.cpp, fields/fragment_outputs.cpp,
 // coupling/run_images.cpp, coupling/run_thermal.cpp, the charts).
 bool isRunOutput(const fs::directory_entry& entry) {
   static const std::regex names(
-      R"((snapshots|fields|images)|thermal_[A-Za-z0-9_.]+|snapshots\.xdmf|summary\.json|)"
+      R"((snapshots|fields|images|fragments)|thermal_[A-Za-z0-9_.]+|snapshots\.xdmf|summary\.json|)"
       R"(energy(_partition)?\.(csv|png)|gauges\.(csv|png)|gauges_reference\.csv|coupling\.png|)"
-      R"(crater_(profile|history|growth|volume)\.(csv|png))");
+      R"(crater_(profile|history|growth|volume)\.(csv|png)|shield_history\.(csv|png)|)"
+      R"(fragments\.csv|size_frequency\.(csv|png)|fragment_speeds\.png)");
   return std::regex_match(entry.path().filename().string(), names);
 }
 

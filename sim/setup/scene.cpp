@@ -33,6 +33,8 @@ Scene validate(const toml::table& doc, const std::string& sourceName) {
   readGauges(root, scene);
   readFields(root, scene);
   readCrater(root, scene);
+  readFragments(root, scene);
+  readShield(root, scene);
   readImages(root, scene);
   readThermal(root, scene);
   return scene;

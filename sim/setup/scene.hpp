@@ -39,6 +39,8 @@ struct Scene {
   OutputOptions output;
   FieldsOutputOptions fields;
   CraterAnalysisOptions crater;
+  FragmentAnalysisOptions fragments;
+  ShieldAnalysisOptions shield;
   ImageOutputOptions images;
   ThermalOutputOptions thermal;
 };

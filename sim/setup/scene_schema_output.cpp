@@ -1,5 +1,5 @@
-// The scene's schema: [fields], [crater], [images] and [thermal] (read in
-// scene_output_sections.cpp). Defaults are those of sim/io/output_options.hpp.
+// The scene's schema: [fields], [crater], [fragments], [shield], [images] and [thermal] (read in
+// scene_output_sections.cpp and scene_analysis_sections.cpp). Defaults are those of sim/io/output_options.hpp.
 #include "sim/setup/scene_schema.hpp"
 
 namespace ejecta::scene_schema_detail {
@@ -31,6 +31,21 @@ std::vector<SceneTable> outputTables() {
         textList("materials", "the bodies at rest", "target materials"),
         quantity("resolution", m, "0",
                  "measuring resolution; 0 = half the median smoothing length")}},
+      {"fragments",
+       "`[fragments]` (optional: fragment identification, docs/fragments.md)",
+       "",
+       {number("link_factor", "2",
+               "friends when closer than link_factor (h_i + h_j) / 2; 2 = the kernel's support"),
+        number("damage_threshold", "0.99", "particles with damage at or above it link to nobody"),
+        number("resolved_spacings", "4",
+               "a size is measured when it spans at least this many particle spacings"),
+        integer("every", "0", "also with every Nth snapshot; 0 = at the end only")}},
+      {"shield",
+       "`[shield]` (optional: a Whipple shield's perforation verdict, docs/whipple.md)",
+       "",
+       {text("wall", "required", "the rear wall's body: a box whose material no other body uses"),
+        text("bumper", "none", "the bumper's body (a box): the debris cloud is measured behind it"),
+        number("damage_threshold", "0.99", "wall particles at or above it have failed")}},
       {"images",
        "`[images]` (optional: pictures during the run, docs/render.md)",
        "",

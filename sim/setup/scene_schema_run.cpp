@@ -32,6 +32,10 @@ std::vector<SceneTable> runTables() {
         table("fields", "no grids", "`[fields]`: sparse VDB grids during the run (docs/fields.md)"),
         table("crater", "impact scenes are measured",
               "`[crater]`: the crater measured at the end of an impact run (docs/crater.md)"),
+        table("fragments", "none",
+              "`[fragments]`: fragments identified at the end of the run (docs/fragments.md)"),
+        table("shield", "none",
+              "`[shield]`: a Whipple shield's perforation verdict and debris cloud (docs/whipple.md)"),
         tableArray("materials", "required", "`[[materials]]`: at least one"),
         tableArray("bodies", "required",
                    "`[[bodies]]`: at least one making particles; earlier bodies win where shapes "

@@ -30,6 +30,9 @@ void readFields(const TableReader& root, Scene& scene);
 void readCrater(const TableReader& root, Scene& scene);
 void readImages(const TableReader& root, Scene& scene);
 void readThermal(const TableReader& root, Scene& scene);
+// [fragments], [shield]                                (scene_analysis_sections.cpp)
+void readFragments(const TableReader& root, Scene& scene);
+void readShield(const TableReader& root, Scene& scene);
 // [[materials]]                                        (scene_materials.cpp)
 void readMaterials(const TableReader& root, Scene& scene);
 // [[bodies]], shapes, voids                            (scene_bodies.cpp)
