@@ -51,9 +51,9 @@ std::string drawLimitChart(const fs::path& out, const coupling::LimitSearchResul
   std::vector<render::ChartSeries> series = {
       {.y = "critical_diameter_mm", .label = "Christiansen (1993) BLE", .csv = out / "ble_curve.csv", .reference = true}};
   if (held.str().find('\n') != held.str().rfind('\n'))
-    series.push_back({.y = "diameter_mm", .label = "SPH: largest not perforating", .csv = out / "limit_held.csv", .points = true});
+    series.push_back({.y = "diameter_mm", .label = "SPH: largest not perforating", .csv = out / "limit_held.csv", .scatter = true});
   if (perforating.str().find('\n') != perforating.str().rfind('\n'))
-    series.push_back({.y = "diameter_mm", .label = "SPH: smallest perforating", .csv = out / "limit_perforating.csv", .points = true});
+    series.push_back({.y = "diameter_mm", .label = "SPH: smallest perforating", .csv = out / "limit_perforating.csv", .scatter = true});
   try {
     charts.writeChart({.csv = out / "ble_curve.csv", .x = "speed_km_s", .series = series,
                        .xlabel = "impact speed [km/s]", .ylabel = "projectile diameter [mm]",

@@ -53,30 +53,38 @@ bool hasFailed(const ParticleSet& p, std::size_t i, double threshold) {
   return p.hasFracture() && p.damage(i) >= threshold;
 }
 
+// Each pair is examined once, from the particle with the larger h (ties: the smaller index):
+// a query of radius linkFactor h_i from it reaches every friend, since the link length
+// linkFactor (h_i + h_j) / 2 is at most that. A few particles with wide kernels (a burst's
+// vapour) then widen only their own queries.
 template <int D>
 void linkFriends(const ParticleSet& p, const FragmentOptions& o, ConcurrentDisjointSets& sets) {
   const std::size_t n = p.numReal;
-  double hMax = 0.0;
-  for (std::size_t i = 0; i < n; ++i) hMax = std::max(hMax, p.h[i]);
+  if (n == 0) return;
+  std::vector<double> sortedH(p.h.begin(), p.h.begin() + static_cast<std::ptrdiff_t>(n));
+  std::nth_element(sortedH.begin(), sortedH.begin() + static_cast<std::ptrdiff_t>(n / 2), sortedH.end());
   CellGrid grid;
-  grid.build(p, D, o.linkFactor * hMax);
+  grid.build(p, D, o.linkFactor * sortedH[n / 2]);
 #pragma omp parallel
   {
     std::vector<std::uint32_t> near;
 #pragma omp for schedule(dynamic, 256)
     for (std::size_t i = 0; i < n; ++i) {
       if (hasFailed(p, i, o.damageThreshold)) continue;
+      const double hi = p.h[i];
       const double xi[3] = {p.x[0][i], D > 1 ? p.x[1][i] : 0.0, D > 2 ? p.x[2][i] : 0.0};
       near.clear();
-      grid.query<D>(p, xi, 0.5 * o.linkFactor * (p.h[i] + hMax), near);
+      grid.query<D>(p, xi, o.linkFactor * hi, near);
       for (const std::uint32_t j : near) {
-        if (j <= i || j >= n || hasFailed(p, j, o.damageThreshold)) continue;
+        if (j >= n || j == i) continue;
+        const double hj = p.h[j];
+        if (hj > hi || (hj == hi && j < i) || hasFailed(p, j, o.damageThreshold)) continue;
         double r2 = 0.0;
         for (int d = 0; d < D; ++d) {
           const double dx = p.x[d][j] - xi[d];
           r2 += dx * dx;
         }
-        const double link = 0.5 * o.linkFactor * (p.h[i] + p.h[j]);
+        const double link = 0.5 * o.linkFactor * (hi + hj);
         if (r2 < link * link) sets.join(static_cast<std::uint32_t>(i), j);
       }
     }

@@ -46,9 +46,10 @@ struct Columns {
       hi[k] = f.wallMax[axis[k]];
       if (f.geometry == Geometry::Axisymmetric) lo[k] = 0.0;
       bins[k] = std::max(1L, static_cast<long>(std::ceil((hi[k] - lo[k]) / width)));
-      const bool axisSide = f.geometry == Geometry::Axisymmetric;
-      innerLo[k] = axisSide ? 0 : static_cast<long>(std::ceil(margin / width));
-      innerHi[k] = bins[k] - 1 - static_cast<long>(std::ceil(margin / width));
+      // The measured columns keep clear of free edges, not of the axis or a mirror plane.
+      const bool openLow = f.geometry != Geometry::Axisymmetric && !f.mirrorLow[axis[k]];
+      innerLo[k] = openLow ? static_cast<long>(std::ceil(margin / width)) : 0;
+      innerHi[k] = bins[k] - 1 - (f.mirrorHigh[axis[k]] ? 0 : static_cast<long>(std::ceil(margin / width)));
     }
   }
   std::size_t size() const { return static_cast<std::size_t>(bins[0] * bins[1]); }
@@ -75,6 +76,12 @@ bool isIntactWall(const ParticleSet& p, std::size_t i, const ShieldFrame& f) {
 
 }  // namespace
 
+int ShieldFrame::mirrorCopies() const {
+  int copies = 1;
+  for (int d = 0; d < 3; ++d) copies *= (mirrorLow[d] ? 2 : 1) * (mirrorHigh[d] ? 2 : 1);
+  return copies;
+}
+
 std::optional<ShieldFrame> shieldFrameFromScene(const Scene& scene) {
   if (!scene.shield.enabled) return std::nullopt;
   const std::string where = scene.sourcePath + ": [shield]: ";
@@ -92,6 +99,14 @@ std::optional<ShieldFrame> shieldFrameFromScene(const Scene& scene) {
   f.normalAxis = 0;
   for (int d = 1; d < dims; ++d)
     if (f.wallMax[d] - f.wallMin[d] < f.wallMax[f.normalAxis] - f.wallMin[f.normalAxis]) f.normalAxis = d;
+  // Mirror planes: a domain wall on a lateral face of the wall's box (planar and 3D).
+  if (scene.geometry != Geometry::Axisymmetric)
+    for (int d = 0; d < dims; ++d) {
+      const AxisBounds& a = scene.domain[static_cast<std::size_t>(d)];
+      if (d == f.normalAxis || !a.bounded) continue;
+      f.mirrorLow[d] = a.lower == BoundaryKind::Wall && std::abs(a.min - f.wallMin[d]) < 0.5 * f.spacing;
+      f.mirrorHigh[d] = a.upper == BoundaryKind::Wall && std::abs(a.max - f.wallMax[d]) < 0.5 * f.spacing;
+    }
   if (scene.geometry == Geometry::Axisymmetric && f.normalAxis != 1)
     throw SceneError(where + "in RZ the wall must be a plate across the axis (thinner in z than in r)");
   if (scene.geometry == Geometry::Axisymmetric && f.wallMin[0] > 0.0)
@@ -179,6 +194,8 @@ WallState measureWall(const ParticleSet& p, const ShieldFrame& f) {
         w.hole = true;
         w.holeArea += cols.area(k0, f.geometry);
       }
+  const double copies = f.mirrorCopies();
+  w.holeArea *= copies;
   if (w.hole)
     w.holeDiameter = f.geometry == Geometry::Planar ? w.holeArea : std::sqrt(4.0 * w.holeArea / kPi);
   // Material behind the wall: beyond the intact envelope of its column by more than 2h.
@@ -194,6 +211,9 @@ WallState measureWall(const ParticleSet& p, const ShieldFrame& f) {
     const double volume = p.mass[i] / p.rho[i];
     w.sizeBehind += f.geometry == Geometry::Axisymmetric ? volume / (2.0 * kPi * std::max(p.x[0][i], 1e-300)) : volume;
   }
+  w.massBehind *= copies;
+  w.wallMassBehind *= copies;
+  w.sizeBehind *= copies;
   const double piece = 2.0 * f.spacing;
   w.resolvedBehind = w.sizeBehind >= std::pow(piece, spatialDimension(f.geometry));
   w.deflection = rearFaceDeflection(p, f);
@@ -224,6 +244,14 @@ DebrisCloud measureDebrisCloud(const ParticleSet& p, const ShieldFrame& f) {
     cloud.radius = std::max(cloud.radius, std::sqrt(r2));
     if (s >= f.wallFront - p.h[i]) cloud.massOnWall += m;
   }
+  // The mirrored copies: their masses and normal momenta add; sideways momentum across a
+  // mirror plane cancels.
+  const double copies = f.mirrorCopies();
+  cloud.mass *= copies;
+  cloud.momentum *= copies;
+  cloud.massOnWall *= copies;
+  for (int k = 0; k < cols.count; ++k)
+    lateral[k] *= f.mirrorLow[cols.axis[k]] || f.mirrorHigh[cols.axis[k]] ? 0.0 : copies;
   cloud.lateralMomentum = std::hypot(lateral[0], lateral[1]);
   if (cloud.leadingEdge > 0.0) cloud.halfAngle = std::atan2(cloud.radius, cloud.leadingEdge);
   return cloud;

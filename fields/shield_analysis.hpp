@@ -36,6 +36,12 @@ struct ShieldFrame {
   double spacing = 0.0;                    // the wall's lattice spacing [m]
   std::array<double, 3> shotPoint{};       // where the projectile's path meets the first plate [m]
   double damageThreshold = 0.99;
+  // Lateral sides of the wall that lie on a mirror plane (a domain wall at the box's face: a
+  // 3D scene modelling half or a quarter of a symmetric shot). The columns reach up to them,
+  // and areas, masses and momenta are those of the whole shield (mirrorCopies() times the
+  // modelled part's).
+  std::array<bool, 3> mirrorLow{}, mirrorHigh{};
+  int mirrorCopies() const;
 
   double s(const ParticleSet& p, std::size_t i) const { return direction * p.x[normalAxis][i]; }
 };

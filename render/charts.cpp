@@ -71,6 +71,7 @@ std::string chartSpecJson(const ChartSpec& spec) {
     json += std::string(", \"reference\": ") + boolean(s.reference);
     json += std::string(", \"markers\": ") + boolean(s.markers);
     json += std::string(", \"points\": ") + boolean(s.points);
+    json += std::string(", \"scatter\": ") + boolean(s.scatter);
     json += std::string(", \"negate\": ") + boolean(s.negate) + "}";
   }
   json += "\n  ],\n";

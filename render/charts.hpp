@@ -25,6 +25,7 @@ struct ChartSeries {
   bool reference = false;       // an exact or reference curve: dashed black
   bool markers = false;         // points joined by lines, in order of x
   bool points = false;          // small dots, no line: every particle of a profile
+  bool scatter = false;         // large markers, no line: a few measured points
   bool negate = false;          // plot -y: a depth drawn downward below a surface at 0
 };
 

@@ -29,7 +29,7 @@ A series may name its own csv and x column; "negate": plot -y (a depth downward)
 coating needed" over all-zero bars). An x label ending in "[s]" is shown in ms or us (the
 values scaled) when every time is below 2 s or 2 ms. "reference": a dashed black line (an exact
 solution). "markers": points joined by lines (a convergence study). "points": small dots, no
-line (every particle of a profile). For "bar" charts the x column
+line (every particle of a profile). "scatter": large markers, no line (a few measured points). For "bar" charts the x column
 holds the category names and each series is one bar per category.
 Relative csv paths are taken from the spec file's directory. The PNG is written to a temporary
 name in the output's directory and renamed, so a reader never sees half a file. Errors (a
@@ -160,6 +160,9 @@ def draw(spec, base):
                 order = sorted(range(len(x)), key=lambda k: x[k])
                 axes.plot([x[k] for k in order], [y[k] for k in order], "o-", linewidth=1.5,
                           markersize=5, label=label)
+            elif entry.get("scatter"):
+                # A few measured points (a simulated limit): large markers, no line.
+                axes.plot(x, y, "o", markersize=8, label=label, zorder=4)
             elif entry.get("points"):
                 # Every particle of a profile: small dots, no line (they scatter about the curve).
                 axes.plot(x, y, ".", markersize=2, alpha=0.6, label=label, rasterized=True)

@@ -167,6 +167,39 @@ TEST(ShieldAnalysis, TheDebrisCloudIsWhatLiesBeyondTheBumper) {
   EXPECT_EQ(c.massOnWall, 0.0);
 }
 
+TEST(ShieldAnalysis, AHalfModelOnAMirrorPlaneMeasuresTheWholeShield) {
+  // A 3D wall 1 mm thick (5 layers of 0.2 mm), x in [-10, 10] mm, y in [0, 10] mm: the half y >= 0
+  // of a symmetric shot, mirrored at y = 0. Failed within 2 mm of the origin: a half disc.
+  ShieldFrame f;
+  f.geometry = Geometry::Spatial;
+  f.normalAxis = 2;
+  f.direction = -1.0;
+  f.wallMaterial = 2;
+  f.wallFront = 50e-3;
+  f.wallRear = 51e-3;
+  f.wallMin = {-10e-3, 0.0, -51e-3};
+  f.wallMax = {10e-3, 10e-3, -50e-3};
+  f.spacing = kDx;
+  f.mirrorLow = {false, true, false};
+  ParticleSet p;
+  p.enableFracture();
+  for (int i = 0; i < 100; ++i)
+    for (int j = 0; j < 50; ++j)
+      for (int k = 0; k < 5; ++k) {
+        const double x = -10e-3 + (i + 0.5) * kDx, y = (j + 0.5) * kDx;
+        p.append({x, y, -50e-3 - (k + 0.5) * kDx}, {}, kRho * kDx * kDx * kDx, kRho, 0.0, kH, 2);
+        p.crack.back() = std::hypot(x, y) < 2e-3 ? 1.0 : 0.0;
+      }
+  p.numReal = p.size();
+  EXPECT_EQ(f.mirrorCopies(), 2);
+  const WallState w = measureWall(p, f);
+  ASSERT_TRUE(w.hole);
+  // The whole hole: the open columns reach to within h and a spacing of the failed radius, as
+  // in RZ; without the mirror the half disc would read as sqrt(2) smaller.
+  EXPECT_GT(w.holeDiameter, 2 * (2e-3 - kH - kDx));
+  EXPECT_LT(w.holeDiameter, 2 * 2e-3);
+}
+
 const char* kScene = R"(
 [scene]
 name = "whipple"
@@ -253,6 +286,18 @@ TEST(ShieldAnalysis, TheFrameComesFromTheScene) {
   // The path meets the bumper's front (z = 0) after 3 mm of descent, 3 mm further along x.
   EXPECT_NEAR(f->shotPoint[0], 0.0, 1e-15);
   EXPECT_NEAR(f->shotPoint[2], 0.0, 1e-15);
+  EXPECT_EQ(f->mirrorCopies(), 1);
+  // Half of it, mirrored at y = 0 by a domain wall on the plates' face.
+  std::string half =
+      sceneText("3d", "[\"-3 mm\", 0.0, \"3 mm\"]", "[\"5 km/s\", 0.0, \"-5 km/s\"]",
+                "[\"-20 mm\", 0.0, \"-1 mm\"]", "[\"20 mm\", \"20 mm\", 0.0]",
+                "[\"-30 mm\", 0.0, \"-52 mm\"]", "[\"30 mm\", \"30 mm\", \"-50 mm\"]");
+  half += "[domain]\ny = { min = 0.0, max = \"40 mm\", lower = \"wall\", upper = \"open\" }\n";
+  const auto mirrored = shieldFrameFromScene(parseScene(half, "half.toml"));
+  ASSERT_TRUE(mirrored);
+  EXPECT_TRUE(mirrored->mirrorLow[1]);
+  EXPECT_FALSE(mirrored->mirrorHigh[1]);
+  EXPECT_EQ(mirrored->mirrorCopies(), 2);
 }
 
 TEST(ShieldAnalysis, TheSceneIsRefusedWhereTheAnalysisCannotWork) {

@@ -9,41 +9,13 @@
 // standoff the seed does not give).
 #include <gtest/gtest.h>
 
-#include <cstdio>
-#include <filesystem>
-#include <unistd.h>
-
-#include "fields/shield_outputs.hpp"
-#include "sim/run/run.hpp"
-#include "sim/setup/scene.hpp"
-
-namespace fs = std::filesystem;
+#include "support/whipple_shots.hpp"
 
 namespace ejecta::fields {
 namespace {
 
-RunSummary shoot(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("ejecta_whipple_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  std::vector<std::string> coarse;
-  for (int b = 0; b < 3; ++b) coarse.push_back("bodies[" + std::to_string(b) + "].spacing=0.4 mm");
-  const Scene scene = loadScene(std::string(EJECTA_SOURCE_DIR) + "/scenes/whipple_sph/" + name + ".toml", coarse);
-  RunOptions options;
-  options.outDir = dir.string();
-  options.configure = [](const Scene& s, RunOptions& o) { addShieldOutputs(o, s); };
-  const RunOutcome r = runScene(scene, options);
-  EXPECT_TRUE(r.ok) << r.error;
-  const RunSummary& s = r.summary;
-  std::printf("%s: %s (%s); hole %.3g mm, %.3g g behind the wall, peak deflection %.3g mm; cloud %.3g g, "
-              "leading %.3g km/s, half-angle %.3g deg; %ld steps, %.1f s\n",
-              name.c_str(), s.flag("shield_perforated") ? "perforated" : "held", s.text("shield_reason").c_str(),
-              s.number("shield_hole_diameter_m") * 1e3, s.number("shield_mass_behind_wall_kg") * 1e3,
-              s.number("shield_peak_deflection_m") * 1e3, s.number("shield_cloud_mass_kg") * 1e3,
-              s.number("shield_cloud_leading_speed_m_s") * 1e-3, s.number("shield_cloud_half_angle_deg"), s.steps,
-              s.wallSeconds);
-  fs::remove_all(dir);
-  return s;
-}
+// 4 particles through the bumper, 8 through the wall.
+RunSummary shoot(const std::string& name) { return test::runWhippleShot(name, "0.4 mm"); }
 
 TEST(VerifyWhippleEmi, Emi19FiveMillimetresAt3_31KmsHeld) {
   const RunSummary s = shoot("emi_19");
