@@ -91,15 +91,17 @@ GridSliceImageOptions parseSlice(const std::string& text) {
   return o;
 }
 
-// "x,y,z": three numbers, or quantities of `dimension` ("0, -60 m, 20 m").
-std::array<double, 3> parseTriple(const std::string& text, Dimension dimension, const std::string& option) {
+// "x,y,z" (or "x,y" with n = 2): numbers, or quantities of `dimension` ("0, -60 m, 20 m").
+std::array<double, 3> parseTriple(const std::string& text, Dimension dimension, const std::string& option,
+                                  int n = 3) {
   std::array<double, 3> out{};
   std::size_t start = 0;
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; k < n; ++k) {
     const std::size_t comma = text.find(',', start);
-    if ((k < 2) != (comma != std::string::npos))
-      throw std::invalid_argument(option + " '" + text + "': expected three components X,Y,Z");
-    std::string part = text.substr(start, k < 2 ? comma - start : std::string::npos);
+    if ((k < n - 1) != (comma != std::string::npos))
+      throw std::invalid_argument(option + " '" + text + "': expected " +
+                                  (n == 3 ? "three components X,Y,Z" : "two components X,Y"));
+    std::string part = text.substr(start, k < n - 1 ? comma - start : std::string::npos);
     part.erase(0, part.find_first_not_of(' '));
     part.erase(part.find_last_not_of(' ') + 1);
     out[static_cast<std::size_t>(k)] = parseValue(part, dimension, option);
@@ -222,12 +224,22 @@ int renderCommand(const RenderArgs& args) {
   if (!args.cut.empty()) options.cut = args.cut;
   options.cutAt = cutAtOf(args).value_or(0.0);
   options.camera = cameraOf(args);
+  if (!args.center.empty()) {
+    const auto c = parseTriple(args.center, Dimension::Length, "--center", 2);
+    options.center = std::array<double, 2>{c[0], c[1]};
+  }
+  if (!args.width.empty()) options.width = parseValue(args.width, Dimension::Length, "--width");
+  if (options.width < 0.0) throw std::invalid_argument("--width: must be positive");
+  if (options.center.has_value() != (options.width > 0.0))
+    throw std::invalid_argument("--center and --width frame a plane or RZ picture together: give both");
   Geometry geometry = info.geometry;
   if (args.view == "plane") geometry = Geometry::Planar;
   else if (args.view == "rz") geometry = Geometry::Axisymmetric;
   else if (args.view == "3d") geometry = Geometry::Spatial;
   else if (!args.view.empty() && args.view != "auto")
     throw std::invalid_argument("--view '" + args.view + "': expected auto, plane, rz or 3d");
+  if (spatialDimension(geometry) == 3 && options.center)
+    throw std::invalid_argument("--center and --width frame plane and RZ pictures; a 3D one takes --camera");
   if (spatialDimension(geometry) != 3 && (options.camera || !args.cutAt.empty()))
     throw std::invalid_argument("--camera and --cut-at are for 3D pictures; " + snapshot.filename().string() +
                                 " is drawn as a plane section (--view 3d to draw it in 3D)");

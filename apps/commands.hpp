@@ -112,6 +112,9 @@ struct RenderArgs {
   // vertical field of view [degrees]; no position: the automatic camera.
   std::string cameraPosition, cameraTarget, cameraUp;
   double fovDegrees = 30.0;
+  // Plane and RZ pictures: the centre "x,y" (RZ: "r,z") and the width shown, both lengths; none:
+  // everything drawn, fitted.
+  std::string center, width;
   // Grid files (coupling/grid_images.hpp): a slice of `grid` on a plane, or an iso-surface.
   std::string grid;                    // the grid to slice (default density)
   std::string slice;                   // x | y | z, optionally =VALUE ("z=2.5 m")
@@ -150,6 +153,18 @@ struct WhippleLimitArgs {
   bool charts = true;
 };
 int whippleLimitCommand(const WhippleLimitArgs& args);
+
+struct ConvergeArgs {
+  std::string scene;                   // file or shipped name
+  std::vector<double> factors;         // spacing multipliers
+  std::vector<std::string> quantities; // summary.json keys
+  std::vector<std::string> keys;       // more scene keys scaled with the spacing
+  std::vector<std::string> overrides;  // --set, every level
+  std::string outDir;                  // default runs/<scene name>_converge
+  int threads = 0;
+  bool charts = true;
+};
+int convergeCommand(const ConvergeArgs& args);
 
 struct UndexReferenceArgs {
   std::string scene;                   // SCENE.toml: a centred charge in one inert medium

@@ -170,6 +170,8 @@ int main(int argc, char** argv) {
   renderCmd->add_option("--target", renderArgs.cameraTarget, "3D: where the camera looks, X,Y,Z [m] (default: the centre of what is drawn)");
   renderCmd->add_option("--up", renderArgs.cameraUp, "3D: the camera's up direction X,Y,Z (default 0,0,1)");
   renderCmd->add_option("--fov", renderArgs.fovDegrees, "3D: the camera's vertical field of view [degrees] (default 30)");
+  renderCmd->add_option("--center", renderArgs.center, "Plane and RZ pictures: the centre shown, X,Y [m] (RZ: R,Z), with --width");
+  renderCmd->add_option("--width", renderArgs.width, "Plane and RZ pictures: the width shown, e.g. \"0.3 m\" (default: fit everything)");
   renderCmd->add_option("--grid,-g", renderArgs.grid, "Grid file: the grid to slice (default density)");
   renderCmd->add_option("--slice", renderArgs.slice, "Grid file: the plane x|y|z[=VALUE] (default z, at 0 or the grid's middle)");
   renderCmd->add_option("--iso", renderArgs.iso, "Grid file: the iso-surface GRID[=VALUE] (default surface=0)");
@@ -193,6 +195,19 @@ int main(int argc, char** argv) {
   limitCmd->add_option("--wall-yield", limitArgs.wallYield, "The rear wall's yield stress for the equations (default: the wall material's Johnson-Cook A)");
   limitCmd->add_option("--threads,-j", limitArgs.threads, "OpenMP threads")->check(countPerCore("--threads"));
   limitCmd->add_flag("!--no-charts", limitArgs.charts, "Write the CSVs but draw no chart");
+
+  ejecta::app::ConvergeArgs convergeArgs;
+  CLI::App* convergeCmd = app.add_subcommand("converge", "Run a scene at successively finer spacings: each quantity's observed order, extrapolated value and GCI uncertainty");
+  convergeCmd->add_option("scene", convergeArgs.scene, "Scene file (TOML), or a shipped scene's name")->required();
+  convergeCmd->add_option("--factors", convergeArgs.factors, "Spacing multipliers, e.g. 1,0.7,0.5 (three or more for an order)")
+      ->delimiter(',')->required()->check(CLI::PositiveNumber);
+  convergeCmd->add_option("--quantity,-q", convergeArgs.quantities, "A number summary.json holds (repeatable), e.g. crater_depth_m")
+      ->required();
+  convergeCmd->add_option("--key", convergeArgs.keys, "Another scene key scaled with the spacing (repeatable), e.g. fields.voxel");
+  convergeCmd->add_option("--set", convergeArgs.overrides, "Override a scene key at every level")->take_all();
+  convergeCmd->add_option("--out,-o", convergeArgs.outDir, "Output directory (default runs/<scene name>_converge)");
+  convergeCmd->add_option("--threads,-j", convergeArgs.threads, "OpenMP threads")->check(countPerCore("--threads"));
+  convergeCmd->add_flag("!--no-charts", convergeArgs.charts, "Write the CSVs but draw no charts");
 
   ejecta::app::FragmentsArgs fragmentsArgs;
   CLI::App* fragmentsCmd = app.add_subcommand("fragments", "Fragments of a snapshot (friends-of-friends split by damage), and the debris a follower meets");
@@ -279,6 +294,7 @@ int main(int argc, char** argv) {
     if (*whippleCmd) return ejecta::app::whippleCommand(whippleArgs);
     if (*fragmentsCmd) return ejecta::app::fragmentsCommand(fragmentsArgs);
     if (*limitCmd) return ejecta::app::whippleLimitCommand(limitArgs);
+    if (*convergeCmd) return ejecta::app::convergeCommand(convergeArgs);
     if (*undexCmd) return ejecta::app::undexReferenceCommand(undexArgs);
     if (*keysCmd) return ejecta::app::keysCommand(keysArgs);
     if (*scenesCmd) return ejecta::app::scenesCommand(scenesArgs);
@@ -297,6 +313,7 @@ int main(int argc, char** argv) {
                               : *whippleCmd ? whippleArgs.shield
                               : *fragmentsCmd ? fragmentsArgs.input
                               : *limitCmd   ? limitArgs.scene
+                              : *convergeCmd ? convergeArgs.scene
                               : *undexCmd   ? undexArgs.scene
                               : *scenesCmd  ? scenesArgs.show
                                             : std::string();

@@ -68,6 +68,10 @@ render::View particleView(Geometry geometry, const std::string& cut) {
 render::View particleView(Geometry geometry, const ParticleImageOptions& options) {
   render::View view;
   const std::string& cut = options.cut;
+  if (spatialDimension(geometry) != 3 && options.center) {
+    view.center = options.center;
+    view.width = options.width;
+  }
   if (geometry == Geometry::Axisymmetric) {
     view.kind = render::ViewKind::Axisymmetric;
   } else if (spatialDimension(geometry) == 3) {

@@ -3,6 +3,7 @@
 // geometry, a field's values with its units, the time. Used by `ejecta render`, by the frames
 // `ejecta run` writes for a scene's [images] table, and under the spacecraft in a thermal pass's
 // picture (coupling/thermal_picture.hpp).
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -22,6 +23,9 @@ struct ParticleImageOptions {
   std::optional<render::Camera> camera;  // 3D; none: look at everything from above and aside
   std::string title;              // default: "<scene>: <field>"
   bool axes = false;              // distance axes along the edges (plane and RZ pictures)
+  // Plane and RZ pictures: the centre and width shown [m]; none: fit everything drawn.
+  std::optional<std::array<double, 2>> center;
+  double width = 0.0;
 };
 
 // The strip's axes for `geometry`: on when asked, named x, y (RZ: r, z).

@@ -126,6 +126,7 @@ std::optional<ShieldFrame> shieldFrameFromScene(const Scene& scene) {
   if (!scene.shield.bumper.empty()) {
     const BodySpec& bumper = bodyNamed(scene, scene.shield.bumper);
     f.bumperName = bumper.name;
+    f.bumperMaterial = bumper.material;
     const double a = f.direction * bumper.shape.min[n], b = f.direction * bumper.shape.max[n];
     f.bumperRear = std::max(a, b);
     firstFace = std::min(a, b);
@@ -141,27 +142,38 @@ std::optional<ShieldFrame> shieldFrameFromScene(const Scene& scene) {
   return f;
 }
 
-double rearFaceDeflection(const ParticleSet& p, const ShieldFrame& f) {
-  // The wall's own body: its particles joined by overlapping kernels, whatever their damage (a
-  // plug or a spalled layer flying off is not the face's bulge), the largest such piece.
-  ParticleSet wall = p.withSameFields();
+namespace {
+
+// Which of the real particles of `material` belong to its largest piece of particles joined by
+// overlapping kernels, whatever their damage: a plate's body, not a plug, a spalled layer or
+// debris that has flown off it.
+std::vector<char> largestPiece(const ParticleSet& p, int material, Geometry geometry) {
+  ParticleSet own = p.withSameFields();
   for (std::size_t i = 0; i < p.numReal; ++i)
-    if (p.material[i] == f.wallMaterial)
-      wall.append({p.x[0][i], p.x[1][i], p.x[2][i]}, {p.v[0][i], p.v[1][i], p.v[2][i]}, p.mass[i],
-                  p.rho[i], p.u[i], p.h[i], p.material[i]);
-  wall.numReal = wall.size();
-  if (wall.numReal == 0) return 0.0;
+    if (p.material[i] == material)
+      own.append({p.x[0][i], p.x[1][i], p.x[2][i]}, {p.v[0][i], p.v[1][i], p.v[2][i]}, p.mass[i], p.rho[i],
+                 p.u[i], p.h[i], p.material[i]);
+  own.numReal = own.size();
+  std::vector<char> in(p.numReal, 0);
+  if (own.numReal == 0) return in;
   FragmentOptions connected;
   connected.damageThreshold = std::numeric_limits<double>::infinity();
-  const FragmentCensus pieces = identifyFragments(wall, f.geometry, connected);
+  const FragmentCensus pieces = identifyFragments(own, geometry, connected);
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.numReal; ++i)
+    if (p.material[i] == material) in[i] = pieces.fragmentOf[k++] == 0;
+  return in;
+}
+
+}  // namespace
+
+double rearFaceDeflection(const ParticleSet& p, const ShieldFrame& f) {
+  const std::vector<char> body = largestPiece(p, f.wallMaterial, f.geometry);
   // The rear face's first layer of particles sits half a spacing inside the face.
   const double layer = f.wallRear - 0.5 * f.spacing;
   double furthest = -std::numeric_limits<double>::infinity();
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < p.numReal; ++i) {
-    if (p.material[i] != f.wallMaterial) continue;
-    if (pieces.fragmentOf[k++] == 0 && isIntactWall(p, i, f)) furthest = std::max(furthest, f.s(p, i));
-  }
+  for (std::size_t i = 0; i < p.numReal; ++i)
+    if (body[i] && isIntactWall(p, i, f)) furthest = std::max(furthest, f.s(p, i));
   return std::max(0.0, furthest - layer);
 }
 
@@ -223,10 +235,13 @@ WallState measureWall(const ParticleSet& p, const ShieldFrame& f) {
 DebrisCloud measureDebrisCloud(const ParticleSet& p, const ShieldFrame& f) {
   const Columns cols(f);
   const double base = f.bumperRear ? *f.bumperRear : f.direction * f.shotPoint[f.normalAxis];
+  // The bumper's own body, bent back behind its rear face, is not debris.
+  const std::vector<char> bumper =
+      f.bumperMaterial >= 0 ? largestPiece(p, f.bumperMaterial, f.geometry) : std::vector<char>(p.numReal, 0);
   DebrisCloud cloud;
   std::array<double, 2> lateral{};
   for (std::size_t i = 0; i < p.numReal; ++i) {
-    if (p.material[i] == f.wallMaterial) continue;
+    if (p.material[i] == f.wallMaterial || bumper[i]) continue;
     const double s = f.s(p, i);
     if (s <= base + p.h[i]) continue;
     const double m = p.mass[i];

@@ -29,6 +29,7 @@ struct ShieldFrame {
   int normalAxis = 1;                   // the wall's thin axis (RZ: 1, z)
   double direction = -1.0;              // the projectile moves along direction * e_normalAxis
   int wallMaterial = -1;
+  int bumperMaterial = -1;                 // -1: no bumper
   std::string wallName, bumperName;
   double wallFront = 0.0, wallRear = 0.0;  // s of the wall's faces, front < rear [m]
   std::optional<double> bumperRear;        // s of the bumper's rear face [m]
@@ -68,8 +69,8 @@ struct WallState {
 };
 
 struct DebrisCloud {
-  // Everything but the wall that lies more than h beyond the bumper's rear face (without a
-  // bumper: every moving particle but the wall's).
+  // Everything but the wall and the bumper's own body (its largest piece joined by overlapping
+  // kernels, which may bend back) that lies more than h beyond the bumper's rear face.
   double mass = 0.0;               // [kg]
   double momentum = 0.0;           // [kg m/s] along the direction of travel
   double lateralMomentum = 0.0;    // [kg m/s] |sideways| (3D, planar); 0 in RZ by symmetry

@@ -88,9 +88,14 @@ Report convergenceStudy(const std::string& name, const Options& options, int def
   Report report;
   report.problem = name;
   report.description = scene.description;
-  const int levels = options.resolutions > 0 ? options.resolutions : defaultLevels;
-  for (int k = levels - 1; k >= 0; --k) {
-    Finished f = runAt(scene, std::pow(2.0, k), options, observer, what);
+  std::vector<double> factors = options.factors;
+  if (factors.empty()) {
+    const int levels = options.resolutions > 0 ? options.resolutions : defaultLevels;
+    for (int k = levels - 1; k >= 0; --k) factors.push_back(std::pow(2.0, k));
+  }
+  std::sort(factors.begin(), factors.end(), std::greater<>());  // coarsest first
+  for (const double factor : factors) {
+    Finished f = runAt(scene, factor, options, observer, what);
     measure(scene, f);
     report.runs.push_back(std::move(f.run));
   }

@@ -40,6 +40,9 @@ struct Report {
 struct Options {
   int threads = 0;
   int resolutions = 0;                // 0 = the problem's default
+  // The spacing factors of a convergence study (relative to the scene's own spacing), in place of
+  // the problem's powers of two (`ejecta converge verify:NAME`); empty: the problem's own.
+  std::vector<double> factors;
   std::vector<std::string> overrides; // --set on the problem's scene
   bool progress = false;
   std::string outDir;                 // non-empty: write profile CSVs here

@@ -124,6 +124,26 @@ TEST_F(Camera, RenderCommandRefusesAHalfGivenCamera) {
   EXPECT_NE(out.find("three components"), std::string::npos) << out;
 }
 
+TEST_F(Camera, RenderCommandFramesAPlanePicture) {
+  // The block seen as a plane section (x, y): framed on x = 0.8 m it fills the middle; framed
+  // 3 m to its side it is out of the picture. --center and --width come together, and not for
+  // a 3D picture.
+  const fs::path run = runBlock("");
+  std::string out;
+  const std::string plane = " --view plane --size 256 --width \"2 m\" --out ";
+  ASSERT_EQ(runCommand(kEjecta + " render " + run.string() + " --center 0.8,0" + plane + (dir_ / "on.png").string(), out), 0) << out;
+  ASSERT_EQ(runCommand(kEjecta + " render " + run.string() + " --center \"3.8 m,0\"" + plane + (dir_ / "off.png").string(), out), 0) << out;
+  const Halves on = colouredHalves(dir_ / "on.png");
+  const Halves off = colouredHalves(dir_ / "off.png");
+  EXPECT_GT(on.left, 500);
+  EXPECT_GT(on.right, 500);
+  EXPECT_EQ(off.left + off.right, 0) << "framed 3 m aside, the block must be out of the picture";
+  EXPECT_NE(runCommand(kEjecta + " render " + run.string() + " --view plane --center 0.8,0", out), 0);
+  EXPECT_NE(out.find("give both"), std::string::npos) << out;
+  EXPECT_NE(runCommand(kEjecta + " render " + run.string() + " --center 0.8,0 --width 2", out), 0);
+  EXPECT_NE(out.find("3D"), std::string::npos) << out;
+}
+
 TEST_F(Camera, SceneCameraDrawsTheRunsFrames) {
   const fs::path run = runBlock(R"([images]
 fields = ["density"]
