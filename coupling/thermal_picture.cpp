@@ -79,7 +79,7 @@ void writeThermalPicture(render::Renderer& renderer, const ParticleSet& particle
 
   ParticleLayerArrays arrays;
   render::ParticleLayer hot =
-      particleLayer(particles, geometry, {.field = "temperature", .log = true, .cut = "z", .cutAt = 0.0, .camera = std::nullopt, .title = ""}, arrays);
+      particleLayer(particles, geometry, {.field = "temperature", .log = true, .cut = "z", .cutAt = 0.0, .camera = std::nullopt, .title = "", .axes = false, .center = std::nullopt}, arrays);
   const std::vector<double>& temperature = arrays.values;
   // One scale for the rock and the faces, so their colours compare.
   const double faceMax = *std::max_element(faceTemperature.begin(), faceTemperature.end());

@@ -32,8 +32,9 @@ double Simulation::ownTimesteps(const std::vector<std::size_t>& which) {
     const std::size_t i = which[k];
     double a2 = 0.0;
     for (int d = 0; d < 3; ++d) a2 += p_.a[d][i] * p_.a[d][i];
-    dt[k] = std::min(courantTimestep(sph, p_.h[i], p_.cs[i], p_.divv[i]),
-                     forceTimestep(sph, p_.h[i], a2));
+    const double courant = isolated(i) ? std::numeric_limits<double>::infinity()
+                                       : courantTimestep(sph, p_.h[i], p_.cs[i], p_.divv[i]);
+    dt[k] = std::min(courant, forceTimestep(sph, p_.h[i], a2));
   }
   const PackageContext context = packageContext();
   for (const auto& package : packages_) package->particleTimesteps(p_, context, which, dt);
@@ -203,7 +204,7 @@ void Simulation::stepIndividually(double limit) {
   }
   const SphOptions& sph = scene_.sph;
   if (sph.density == DensityMethod::Continuity && sph.smoothingLength == SmoothingLengthMethod::Neighbours)
-    setSmoothingFromDensity(p_, ws_);
+    smoothingLengthFromDensity();
 
   evaluateDerivatives(&active);
 

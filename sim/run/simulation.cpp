@@ -15,6 +15,7 @@
 #include "sim/sph/density_pass.hpp"
 #include "sim/run/packages/phase_fractions_package.hpp"
 #include "sim/run/packages/porosity_package.hpp"
+#include "sim/run/packages/smoothing_length_cap_package.hpp"
 #include "sim/run/packages/programmed_burn_package.hpp"
 #include "sim/run/timestep_criteria.hpp"
 #include "sim/run/packages/strength_package.hpp"
@@ -120,6 +121,9 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
   if (!scene_.detonations.empty() && !p_.hasBurn())
     throw SimulationError("scene '" + scene_.name + "' detonates an explosive but the particles "
                           "carry no lighting times (build them with buildParticles)");
+  // A restart keeps the caps its snapshot holds.
+  if (scene_.sph.hMaxFactor > 0.0 || p_.field(SmoothingLengthCapPackage::kCap))
+    addPackage(std::make_shared<SmoothingLengthCapPackage>(scene_.sph.hMaxFactor));
   // Porosity first: the burn, strength and fracture then act on the porous pressure.
   if (materials_.anyPorosity())
     addPackage(std::make_shared<PorosityPackage>(materials_, scene_.sph.density));
@@ -185,7 +189,7 @@ void Simulation::initialise() {
   stateTime_ = time_;
   if (scene_.sph.density == DensityMethod::Continuity &&
       scene_.sph.smoothingLength == SmoothingLengthMethod::Neighbours)
-    setSmoothingFromDensity(p_, ws_);
+    smoothingLengthFromDensity();
   if (bins_) bins_->registerFields(p_, leapfrog_, scene_.sph.density == DensityMethod::Summation,
                                    densityPassSetsSmoothingLength(scene_.sph));
   evaluateDerivatives();
@@ -371,6 +375,7 @@ void Simulation::evaluateDerivatives(const std::vector<std::size_t>* active) {
     ws_.grid.build(p_, dim, kKernelSupport * hs[hs.size() / 2]);
     ws_.lists.reset(p_.size(), std::max(ws_.numThreads, omp_get_max_threads()));
     std::vector<double> hBefore(p_.h.begin(), p_.h.begin() + static_cast<std::ptrdiff_t>(p_.numReal));
+    ws_.hCap = SmoothingLengthCapPackage::caps(p_);  // the ghosts above may have moved it
     const std::optional<std::size_t> bad = runDensityPass(p_, ws_, active);
     stopIfAnyRankFailed(bad ? failureMessage(*bad, "no positive density from the density pass (an "
                                                    "isolated particle, or the continuity density "
@@ -447,12 +452,18 @@ void Simulation::evaluateDerivatives(const std::vector<std::size_t>* active) {
   for (const auto& package : packages_) package->evaluateDerivatives(p_, context);
 }
 
+void Simulation::smoothingLengthFromDensity() {
+  ws_.hCap = SmoothingLengthCapPackage::caps(p_);
+  setSmoothingFromDensity(p_, ws_);
+}
+
 void Simulation::computeNextTimestep() {
   const SphOptions& sph = scene_.sph;
   double dtCourant = std::numeric_limits<double>::max();
   double dtForce = std::numeric_limits<double>::max();
   for (std::size_t i = 0; i < p_.numReal; ++i) {
-    dtCourant = std::min(dtCourant, courantTimestep(sph, p_.h[i], p_.cs[i], p_.divv[i]));
+    if (!isolated(i))
+      dtCourant = std::min(dtCourant, courantTimestep(sph, p_.h[i], p_.cs[i], p_.divv[i]));
     double a2 = 0.0;
     for (int d = 0; d < 3; ++d) a2 += p_.a[d][i] * p_.a[d][i];
     dtForce = std::min(dtForce, forceTimestep(sph, p_.h[i], a2));
@@ -519,7 +530,8 @@ void Simulation::checkHealth(double dt, const std::vector<std::size_t>* only) co
                    std::to_string(maxNeighbours_) +
                    "); h no longer follows the density (the seed's dh/dt or constant h in a "
                    "strong expansion, or a particle rarefied at a contact under continuity "
-                   "density): use sph.smoothing_length = \"neighbours\" with summation density");
+                   "density): cap h with sph.h_max_factor (e.g. 4), or use "
+                   "sph.smoothing_length = \"neighbours\" with summation density");
     }
     return {};
   };
@@ -621,7 +633,7 @@ void Simulation::step(double limit) {
   boundaries_.confine(p_, &leapfrog_.velocityHalf());
   if (sph.density == DensityMethod::Continuity &&
       sph.smoothingLength == SmoothingLengthMethod::Neighbours)
-    setSmoothingFromDensity(p_, ws_);
+    smoothingLengthFromDensity();
 
   evaluateDerivatives();
 

@@ -142,6 +142,15 @@ class Simulation {
   // updateState must honour PackageContext::active then: the updates are not idempotent).
   void evaluateEquationOfState(const ParticleMask* only = nullptr);
   void computeNextTimestep();
+  // A particle whose kernel reaches no other (real, ghost or halo) exchanges nothing, so its
+  // sound speed sets no step: a fragment flung clear and rarefied under continuity density can
+  // get tens of km/s (a solid's 4G/(3 rho) at a hundredth of its density) and would otherwise
+  // set every step of the run. Its acceleration still votes (the force criterion).
+  bool isolated(std::size_t i) const {
+    return i < ws_.neighbourCount.size() && ws_.neighbourCount[i] <= 1;
+  }
+  // h from the continuity density (SmoothingLengthMethod::Neighbours), held at the caps.
+  void smoothingLengthFromDensity();
   // Stops the run (SimulationError on every rank) on a bad state or a step below dt_min; `only`:
   // check just those particles (ascending), the others being known good.
   void checkHealth(double dt, const std::vector<std::size_t>* only = nullptr) const;

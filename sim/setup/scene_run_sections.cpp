@@ -111,6 +111,12 @@ void readSph(const TableReader& root, SphOptions& sph) {
   r.check(sph.forceFactor > 0.0, "force_factor", positiveMessage(sph.forceFactor, one));
   sph.hMinFactor = r.optQuantity("h_min_factor", one).value_or(sph.hMinFactor);
   r.check(sph.hMinFactor >= 0.0 && sph.hMinFactor < 1.0, "h_min_factor", "must be in [0, 1)");
+  sph.hMaxFactor = r.optQuantity("h_max_factor", one).value_or(sph.hMaxFactor);
+  // Below 1 the cap would cut the initial h itself; beyond ~30 the neighbour check stops the run
+  // before the cap is reached (30 x the kernel's expected neighbours).
+  r.check(sph.hMaxFactor == 0.0 || (sph.hMaxFactor >= 1.0 && sph.hMaxFactor <= 30.0),
+          "h_max_factor",
+          "is " + formatQuantity(sph.hMaxFactor, one) + "; must be 0 (no cap) or in [1, 30]");
 
   if (const toml::table* vt = r.optTable("viscosity")) {
     const TableReader v(root.context(), *vt, "sph.viscosity", "sph.viscosity");

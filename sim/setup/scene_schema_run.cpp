@@ -80,6 +80,9 @@ std::vector<SceneTable> runTables() {
         number("courant", "0.3", "Courant factor, in (0, 1]"),
         number("force_factor", "0.25", "dt ≤ force_factor·√(h/|a|), > 0"),
         number("h_min_factor", "1e-3", "h below this × initial h stops the run, in [0, 1)"),
+        number("h_max_factor", "0",
+               "each particle's h held at this × its first h (0: no cap; else [1, 30]): "
+               "particles thrown clear of a body keep a bounded kernel"),
         table("viscosity", "defaults below", "`[sph.viscosity]`: Monaghan artificial viscosity"),
         table("conductivity", "off", "`[sph.conductivity]`: artificial conductivity"),
         choice("form", {"lagrangian", "interface"}, "\"lagrangian\"",

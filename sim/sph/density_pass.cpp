@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -78,7 +79,8 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
       const std::size_t i = active ? (*active)[at] : at;
       const double xi[3] = {p.x[0][i], p.x[1][i], p.x[2][i]};
       const double mi = p.mass[i];
-      const double hStart = p.h[i];
+      const double hCap = ws.hCap ? ws.hCap[i] : std::numeric_limits<double>::infinity();
+      const double hStart = std::min(p.h[i], hCap);
       double h = hStart;
       double radius = 0.0;
       auto fetch = [&](double needed) {
@@ -108,6 +110,7 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
           double hNew = (fp > 0.0 && std::isfinite(fp)) ? h - f / fp : h * (f > 0 ? 0.8 : 1.25);
           hNew = std::clamp(hNew, std::max(0.5 * h, hStart / kMaxGrowthPerStep),
                             std::min(2.0 * h, hStart * kMaxGrowthPerStep));
+          hNew = std::min(hNew, hCap);
           const bool converged = std::abs(hNew - h) < kNewtonTolerance * h;
           h = hNew;
           if (kKernelSupport * h > radius) fetch(kKernelSupport * h);
@@ -191,8 +194,13 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
       double rt = 1.0, drt = 0.0;
       if constexpr (RZ) ws.axis->smoothedRadius(xi[0], h, rt, drt);
       // The density-like quantity of the kernel sums: rho (1D, 2D, 3D) or eta = 2 pi rt rho (RZ).
+      // A particle held at its h cap under continuity density has rarefied below what its
+      // kernel holds (why h reached the cap): its own continuity density would divide the
+      // neighbours' mass flux, driving it to zero in a few steps with a divergence far beyond
+      // any velocity in the run. It takes the kernel sum instead, as summation density does.
+      const bool capped = h >= hCap;
       double sigma;
-      if (summation) {
+      if (summation || capped) {
         sigma = S;
         p.rho[i] = RZ ? S / (2.0 * std::numbers::pi * rt) : S;
       } else {
@@ -202,12 +210,13 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
         failedIndex = std::min(failedIndex, i);
         continue;
       }
-      double omega = tiedH ? 1.0 + h / (D * sigma) * dS : 1.0;
+      // At the cap h no longer follows the density, so the grad-h term is absent (omega = 1).
+      double omega = tiedH && !capped ? 1.0 + h / (D * sigma) * dS : 1.0;
       if constexpr (RZ) {
         // rho = eta / (2 pi rt(h)) also depends on h through rt: with h tied to eta the
         // Lagrangian's d rho carries f = 1 + (rt - r rt') / (2 rt) (1.5 on the axis, 1 beyond
         // 2h), folded into omega.
-        if (tiedH) omega /= 1.0 + (rt - xi[0] * drt) / (2.0 * rt);
+        if (tiedH && !capped) omega /= 1.0 + (rt - xi[0] * drt) / (2.0 * rt);
       }
       p.omega[i] = omega;
       if constexpr (RZ) {
@@ -225,6 +234,10 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
       p.dh_dt[i] = sph.smoothingLength == SmoothingLengthMethod::Seed
                        ? -sph.relaxation * h / (p.rho[i] * D) * drho
                        : 0.0;
+      if (capped) {
+        p.dh_dt[i] = std::min(p.dh_dt[i], 0.0);
+        p.drho_dt[i] = 0.0;  // its density is set by each pass
+      }
     }
   }
   return failedIndex < nReal ? std::optional<std::size_t>(failedIndex) : std::nullopt;
@@ -275,6 +288,7 @@ void setSmoothingFromDensity(ParticleSet& p, const HydroWorkspace& ws) {
       perVolume = 2.0 * std::numbers::pi * rt * p.rho[i];
     }
     p.h[i] = ws.sph.eta * std::pow(p.mass[i] / perVolume, 1.0 / D);
+    if (ws.hCap) p.h[i] = std::min(p.h[i], ws.hCap[i]);
   }
 }
 

@@ -34,7 +34,7 @@ inline bool densityPassSetsSmoothingLength(const SphOptions& sph) {
 }
 
 // Smoothing length for the "neighbours" method from a density (continuity mode): h from the
-// particle's own mass and density.
+// particle's own mass and density, held at its cap (HydroWorkspace::hCap).
 void setSmoothingFromDensity(ParticleSet& p, const HydroWorkspace& ws);
 
 }  // namespace ejecta

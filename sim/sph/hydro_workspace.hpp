@@ -39,7 +39,11 @@ struct HydroWorkspace {
   // corrected so that it is exact for a linear field; filled only when the viscosity
   // reconstructs velocities (SphOptions::viscosityReconstruction), empty otherwise.
   std::vector<double> velocityGradient;
-  // Number of neighbours in each real particle's gather list (diagnostics).
+  // Largest h of each real particle (SphOptions::hMaxFactor), or nullptr: h is not capped. The
+  // run points it at the particles' column before each pass that sets h.
+  const double* hCap = nullptr;
+  // Number of neighbours in each real particle's gather list, the particle itself included (1: it
+  // reaches nothing, so it exchanges nothing and its sound speed sets no step).
   std::vector<std::uint32_t> neighbourCount;
 };
 

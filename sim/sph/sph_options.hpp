@@ -49,6 +49,10 @@ struct SphOptions {
   ViscosityReconstruction viscosityReconstruction = ViscosityReconstruction::None;
   double conductivity = 0.0; // Price (2008) artificial conductivity coefficient alpha_u; 0 = off
   double hMinFactor = 1e-3;  // h below hMinFactor * initial h is a collapse (run stops)
+  // Each particle's h is held at hMaxFactor x its first h (0 = no cap): a particle thrown out
+  // of its body and rarefied keeps a bounded kernel instead of growing it until it spans the
+  // body it left (sim/run/packages/smoothing_length_cap_package.hpp).
+  double hMaxFactor = 0.0;
   MomentumForm form = MomentumForm::Lagrangian;
   // Monaghan (2000) / Gray, Monaghan & Swift (2001) artificial stress against the tensile
   // instability, applied to materials with strength: epsilon (0 = off; negative = the default,

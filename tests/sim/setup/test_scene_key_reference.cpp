@@ -128,6 +128,7 @@ TEST(SceneKeyReference, DefaultsAreTheCodes) {
       {"sph", "courant", sph.courant},
       {"sph", "force_factor", sph.forceFactor},
       {"sph", "h_min_factor", sph.hMinFactor},
+      {"sph", "h_max_factor", sph.hMaxFactor},
       {"sph.viscosity", "alpha", sph.alpha},
       {"sph.viscosity", "beta", sph.beta},
       {"sph.viscosity", "epsilon", sph.epsilon},
@@ -240,7 +241,8 @@ TEST(SceneKeyReference, UnknownKeysListTheSchemasKeys) {
   ASSERT_EQ(errorOf(kMinimal), "");
   EXPECT_EQ(errorOf(std::string(kMinimal) + "[sph]\nkernal = \"wendland_c2\"\n"),
             "k.toml:18: key 'sph.kernal': unknown key; allowed keys here: kernel, density, "
-            "smoothing_length, eta, relaxation, courant, force_factor, h_min_factor, viscosity, "
+            "smoothing_length, eta, relaxation, courant, force_factor, h_min_factor, h_max_factor, "
+            "viscosity, "
             "conductivity, form, artificial_stress");
   EXPECT_NE(errorOf(std::string(kMinimal) + "[materials.fracture]\nmodel = \"none\"\nsed = 2\n")
                 .find("allowed keys here: model, weibull_k, weibull_m, tensile_strength, "
