@@ -32,9 +32,12 @@ double Simulation::ownTimesteps(const std::vector<std::size_t>& which) {
     const std::size_t i = which[k];
     double a2 = 0.0;
     for (int d = 0; d < 3; ++d) a2 += p_.a[d][i] * p_.a[d][i];
-    const double courant = isolated(i) ? std::numeric_limits<double>::infinity()
-                                       : courantTimestep(sph, p_.h[i], p_.cs[i], p_.divv[i]);
-    dt[k] = std::min(courant, forceTimestep(sph, p_.h[i], a2));
+    // An isolated particle keeps its own Courant step here (unlike global steps): on a short
+    // bin it costs only its own updates, and on a long one it could fly into a neighbour's
+    // kernel in mid-step before the limiter sees it (measured on the case 2 follower's burst:
+    // energy error 2.8e-2 against 1.8e-3).
+    dt[k] = std::min(courantTimestep(sph, p_.h[i], p_.cs[i], p_.divv[i]),
+                     forceTimestep(sph, p_.h[i], a2));
   }
   const PackageContext context = packageContext();
   for (const auto& package : packages_) package->particleTimesteps(p_, context, which, dt);

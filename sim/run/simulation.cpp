@@ -123,7 +123,7 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
                           "carry no lighting times (build them with buildParticles)");
   // A restart keeps the caps its snapshot holds.
   if (scene_.sph.hMaxFactor > 0.0 || p_.field(SmoothingLengthCapPackage::kCap))
-    addPackage(std::make_shared<SmoothingLengthCapPackage>(scene_.sph.hMaxFactor));
+    addPackage(std::make_shared<SmoothingLengthCapPackage>(scene_.sph, scene_.geometry));
   // Porosity first: the burn, strength and fracture then act on the porous pressure.
   if (materials_.anyPorosity())
     addPackage(std::make_shared<PorosityPackage>(materials_, scene_.sph.density));

@@ -145,7 +145,8 @@ class Simulation {
   // A particle whose kernel reaches no other (real, ghost or halo) exchanges nothing, so its
   // sound speed sets no step: a fragment flung clear and rarefied under continuity density can
   // get tens of km/s (a solid's 4G/(3 rho) at a hundredth of its density) and would otherwise
-  // set every step of the run. Its acceleration still votes (the force criterion).
+  // set every step of the run. Its acceleration still votes (the force criterion). Global steps
+  // only: individual steps give it its own short bin (sim/run/individual_steps.cpp).
   bool isolated(std::size_t i) const {
     return i < ws_.neighbourCount.size() && ws_.neighbourCount[i] <= 1;
   }

@@ -198,7 +198,7 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
       // kernel holds (why h reached the cap): its own continuity density would divide the
       // neighbours' mass flux, driving it to zero in a few steps with a divergence far beyond
       // any velocity in the run. It takes the kernel sum instead, as summation density does.
-      const bool capped = h >= hCap;
+      const bool capped = h >= hCap * (1.0 - 1e-3);  // from a floored density: the cap, rounded
       double sigma;
       if (summation || capped) {
         sigma = S;

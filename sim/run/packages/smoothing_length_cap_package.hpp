@@ -4,9 +4,20 @@
 // travels with the particle (between ranks, through restarts). A particle thrown clear of its
 // body and rarefied under continuity density otherwise widens its kernel until it spans the body
 // it left and the neighbour check stops the run (docs/convergence.md, "Particles thrown clear").
-// Spheral holds h below a per-NodeList hmax the same way; AUTODYN bounds it by a minimum
-// density factor. The density pass and setSmoothingFromDensity apply the cap; nothing evolves.
+// Spheral holds h below a per-NodeList hmax the same way. The density pass and
+// setSmoothingFromDensity apply the cap; nothing evolves.
+//
+// Under continuity density the package also floors each particle's density at the density
+// whose h is the cap (AUTODYN's SPH bounds its density by a minimum density factor the same
+// way): a particle far more rarefied than its neighbours takes their mass flux into its own
+// small density, and one step can drive it through zero. Floored, its h is the cap, and the
+// density pass gives it its kernel sum instead (sim/sph/density_pass.cpp).
+#include <optional>
+
 #include "sim/run/physics_package.hpp"
+#include "sim/sph/axis_correction.hpp"
+#include "sim/sph/sph_options.hpp"
+#include "sim/state/geometry.hpp"
 
 namespace ejecta {
 
@@ -14,19 +25,28 @@ class SmoothingLengthCapPackage : public PhysicsPackage {
  public:
   static constexpr const char* kCap = "smoothing_length_cap";
 
-  explicit SmoothingLengthCapPackage(double factor) : factor_(factor) {}
+  SmoothingLengthCapPackage(const SphOptions& sph, Geometry geometry);
 
   std::string name() const override { return "smoothing_length_cap"; }
   // The cap of a particle not carrying one yet (a new run; a restart of a run without it) is
   // factor x its present h.
   void registerFields(ParticleSet& p) override;
+  // Continuity density: the floor, on the predicted state and on the step's end.
+  void afterDrift(ParticleSet& p, const PackageContext& c) override;
+  void finalize(ParticleSet& p, const PackageContext& c) override;
 
   // The caps of the real particles (the column's first numReal entries), or nullptr when `p`
   // carries none. Valid until `p` is resized (ghosts added or dropped).
   static const double* caps(const ParticleSet& p);
 
  private:
+  void floorDensity(ParticleSet& p, const ParticleMask* only) const;
+
   double factor_;
+  double eta_;
+  bool continuity_;
+  Geometry geometry_;
+  std::optional<AxisCorrection> axis_;  // RZ: the density of an area density needs rt
 };
 
 }  // namespace ejecta

@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 #include <cstdio>
+#include <numbers>
 #include <string>
 
 #include "sim/run/run.hpp"
@@ -17,6 +17,7 @@
 #include "sim/setup/bodies.hpp"
 #include "sim/setup/scene.hpp"
 #include "sim/solid/materials.hpp"
+#include "sim/verify/verification.hpp"
 
 namespace ejecta {
 namespace {
@@ -156,3 +157,28 @@ TEST(StabilityRarefied, AParticleThatReachesNothingSetsNoStep) {
 
 }  // namespace
 }  // namespace ejecta
+
+namespace ejecta::verify {
+namespace {
+
+// The known failure of tests/sim/sph/test_sph_options.cpp (ContinuityDensityAtAStrongContact...):
+// continuity density with the seed's dh/dt at the 8:1 contact of the circular Sod tube rarefies
+// a particle by the contact until its kernel holds more than 30x the neighbours it should. With
+// h held at twice its first h (and the density floored where h is the cap) the run finishes and
+// stays near the exact solution. Measured L1(rho) 0.030 (the default summation run: 0.0105; the
+// contact's rarefied particles cost accuracy, but the run finishes); 0.045 bounds it.
+TEST(StabilityRarefied, TheStrongContactUnderContinuityDensityRunsWithACap) {
+  Options options;
+  options.resolutions = 1;
+  options.overrides = {"sph.density=continuity", "sph.smoothing_length=seed",
+                       "sph.h_max_factor=2"};
+  const Report r = runProblem("sod_2d", options);
+  std::printf("  sod_2d, continuity density, h capped: N = %zu, L1(rho) = %.4g, dE/E = %.3g\n",
+              r.runs.back().particles, r.runs.back().metric("L1_density"), r.runs.back().energyError);
+  EXPECT_LT(r.runs.back().metric("L1_density"), 0.045);
+  // Measured dE/E 2.1e-6 (the floor changes no energy): 1e-4 as the Sod tests allow.
+  EXPECT_LT(std::abs(r.runs.back().energyError), 1e-4);
+}
+
+}  // namespace
+}  // namespace ejecta::verify
