@@ -122,8 +122,10 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
     throw SimulationError("scene '" + scene_.name + "' detonates an explosive but the particles "
                           "carry no lighting times (build them with buildParticles)");
   // A restart keeps the caps its snapshot holds.
-  if (scene_.sph.hMaxFactor > 0.0 || p_.field(SmoothingLengthCapPackage::kCap))
-    addPackage(std::make_shared<SmoothingLengthCapPackage>(scene_.sph, scene_.geometry));
+  if (scene_.sph.hMaxFactor > 0.0 || p_.field(SmoothingLengthCapPackage::kCap)) {
+    hCaps_ = std::make_shared<SmoothingLengthCapPackage>(scene_.sph, scene_.geometry);
+    addPackage(hCaps_);
+  }
   // Porosity first: the burn, strength and fracture then act on the porous pressure.
   if (materials_.anyPorosity())
     addPackage(std::make_shared<PorosityPackage>(materials_, scene_.sph.density));
@@ -346,6 +348,7 @@ void Simulation::sortForLocality() {
 }
 
 void Simulation::evaluateEquationOfState(const ParticleMask* only) {
+  if (hCaps_) hCaps_->holdToCaps(p_, only);  // the floored density is the one the EOS sees
   materialMembers_.assign(materials_.size(), {});
   for (std::size_t i = 0; i < p_.numReal; ++i)
     if (selected(only, i)) materialMembers_[static_cast<std::size_t>(p_.material[i])].push_back(i);

@@ -23,6 +23,7 @@
 #include "sim/run/time_bins.hpp"
 #include "sim/run/physics_package.hpp"
 #include "sim/run/packages/fracture_package.hpp"
+#include "sim/run/packages/smoothing_length_cap_package.hpp"
 #include "sim/solid/materials.hpp"
 #include "sim/state/particles.hpp"
 #include "sim/setup/scene.hpp"
@@ -142,16 +143,19 @@ class Simulation {
   // updateState must honour PackageContext::active then: the updates are not idempotent).
   void evaluateEquationOfState(const ParticleMask* only = nullptr);
   void computeNextTimestep();
-  // A particle whose kernel reaches no other (real, ghost or halo) exchanges nothing, so its
-  // sound speed sets no step: a fragment flung clear and rarefied under continuity density can
-  // get tens of km/s (a solid's 4G/(3 rho) at a hundredth of its density) and would otherwise
-  // set every step of the run. Its acceleration still votes (the force criterion). Global steps
-  // only: individual steps give it its own short bin (sim/run/individual_steps.cpp).
+  // A particle in no pair (no real, ghost or halo particle within either's kernel) exchanges
+  // nothing, so its sound speed sets no step: a fragment flung clear and rarefied under
+  // continuity density can get tens of km/s (a solid's 4G/(3 rho) at a hundredth of its
+  // density) and would otherwise set every step of the run. Its acceleration still votes (the
+  // force criterion). Global steps only: individual steps give it its own short bin
+  // (sim/run/individual_steps.cpp).
   bool isolated(std::size_t i) const {
-    return i < ws_.neighbourCount.size() && ws_.neighbourCount[i] <= 1;
+    return i < ws_.lists.pairedParticles() && ws_.lists.pairs(i).size() <= 1;  // itself alone
   }
   // h from the continuity density (SmoothingLengthMethod::Neighbours), held at the caps.
   void smoothingLengthFromDensity();
+  // sph.h_max_factor's package (null when h is not capped).
+  std::shared_ptr<SmoothingLengthCapPackage> hCaps_;
   // Stops the run (SimulationError on every rank) on a bad state or a step below dt_min; `only`:
   // check just those particles (ascending), the others being known good.
   void checkHealth(double dt, const std::vector<std::size_t>* only = nullptr) const;

@@ -110,7 +110,7 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
           double hNew = (fp > 0.0 && std::isfinite(fp)) ? h - f / fp : h * (f > 0 ? 0.8 : 1.25);
           hNew = std::clamp(hNew, std::max(0.5 * h, hStart / kMaxGrowthPerStep),
                             std::min(2.0 * h, hStart * kMaxGrowthPerStep));
-          hNew = std::min(hNew, hCap);
+          hNew = std::min(hNew, hCap);  // == hCap exactly when the cap holds it
           const bool converged = std::abs(hNew - h) < kNewtonTolerance * h;
           h = hNew;
           if (kKernelSupport * h > radius) fetch(kKernelSupport * h);
@@ -194,13 +194,11 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
       double rt = 1.0, drt = 0.0;
       if constexpr (RZ) ws.axis->smoothedRadius(xi[0], h, rt, drt);
       // The density-like quantity of the kernel sums: rho (1D, 2D, 3D) or eta = 2 pi rt rho (RZ).
-      // A particle held at its h cap under continuity density has rarefied below what its
-      // kernel holds (why h reached the cap): its own continuity density would divide the
-      // neighbours' mass flux, driving it to zero in a few steps with a divergence far beyond
-      // any velocity in the run. It takes the kernel sum instead, as summation density does.
-      const bool capped = h >= hCap * (1.0 - 1e-3);  // from a floored density: the cap, rounded
+      // At its cap h no longer follows the density. Under continuity density h reaches it from
+      // a floored density (rounded: within 1e-3); with h tied to the kernel sum, by the clamp.
+      const bool capped = tiedH ? h == hCap : h >= hCap * (1.0 - 1e-3);
       double sigma;
-      if (summation || capped) {
+      if (summation) {
         sigma = S;
         p.rho[i] = RZ ? S / (2.0 * std::numbers::pi * rt) : S;
       } else {
@@ -225,19 +223,22 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
         ws.dSmoothedR[i] = drt;
       }
       const double hoopRate = RZ ? p.v[0][i] * drt / rt : 0.0;  // v_r / r term of div v
-      p.divv[i] = -vdotgrad / (omega * sigma) + hoopRate;
+      // A particle held at its cap under continuity density has rarefied below what its kernel
+      // holds (why h reached the cap): its own small density would divide its neighbours' mass
+      // flux, giving a divergence far beyond any velocity in the run and a continuity rate that
+      // drives it through zero in a step. Its flow quantities divide by the kernel sum instead:
+      // its density then changes at the rate its neighbours' divergence gives.
+      const double flow = capped && !summation ? std::max(S, sigma) : sigma;
+      p.divv[i] = -vdotgrad / (omega * flow) + hoopRate;
       p.curlv[i] = std::sqrt(curl[0] * curl[0] + curl[1] * curl[1] + curl[2] * curl[2]) /
-                   (omega * sigma);
+                   (omega * flow);
       // Continuity rate, also what drives the seed's dh/dt.
-      const double drho = p.rho[i] / sigma * vdotgrad - p.rho[i] * hoopRate;
+      const double drho = p.rho[i] / flow * vdotgrad - p.rho[i] * hoopRate;
       p.drho_dt[i] = drho;
       p.dh_dt[i] = sph.smoothingLength == SmoothingLengthMethod::Seed
                        ? -sph.relaxation * h / (p.rho[i] * D) * drho
                        : 0.0;
-      if (capped) {
-        p.dh_dt[i] = std::min(p.dh_dt[i], 0.0);
-        p.drho_dt[i] = 0.0;  // its density is set by each pass
-      }
+      if (capped) p.dh_dt[i] = std::min(p.dh_dt[i], 0.0);
     }
   }
   return failedIndex < nReal ? std::optional<std::size_t>(failedIndex) : std::nullopt;

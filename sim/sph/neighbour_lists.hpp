@@ -36,6 +36,8 @@ class NeighbourLists {
   template <int D>
   void buildActivePairs(const ParticleSet& p, const CellGrid& grid, double support,
                         const std::vector<std::size_t>& active);
+  // How many real particles pairs() was last built for (0: none yet).
+  std::size_t pairedParticles() const { return pairStart_.empty() ? 0 : pairStart_.size() - 1; }
   std::span<const std::uint32_t> pairs(std::size_t i) const {
     return {pairs_.data() + pairStart_[i], pairStart_[i + 1] - pairStart_[i]};
   }

@@ -27,20 +27,18 @@ void SmoothingLengthCapPackage::registerFields(ParticleSet& p) {
 }
 
 void SmoothingLengthCapPackage::afterDrift(ParticleSet& p, const PackageContext&) {
-  if (continuity_) floorDensity(p, nullptr);  // every particle's state is predicted
+  holdToCaps(p, nullptr);  // every particle's state is predicted
 }
 
-void SmoothingLengthCapPackage::finalize(ParticleSet& p, const PackageContext& c) {
-  if (continuity_) floorDensity(p, c.active);
-}
-
-void SmoothingLengthCapPackage::floorDensity(ParticleSet& p, const ParticleMask* only) const {
+void SmoothingLengthCapPackage::holdToCaps(ParticleSet& p, const ParticleMask* only) const {
   const double* cap = caps(p);
   if (!cap) return;
   const int D = spatialDimension(geometry_);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.numReal; ++i) {
     if (!selected(only, i)) continue;
+    if (p.h[i] > cap[i]) p.h[i] = cap[i];
+    if (!continuity_) continue;
     // h = eta (m / sigma)^(1/D) (setSmoothingFromDensity) is the cap at sigma = m (eta/cap)^D,
     // sigma the density (RZ: the area density 2 pi rt rho).
     double sigma = p.mass[i] * std::pow(eta_ / cap[i], D);
@@ -49,7 +47,7 @@ void SmoothingLengthCapPackage::floorDensity(ParticleSet& p, const ParticleMask*
       axis_->smoothedRadius(p.x[0][i], cap[i], rt, drt);
       sigma /= 2.0 * std::numbers::pi * rt;
     }
-    if (!(p.rho[i] >= sigma)) p.rho[i] = sigma;  // NaN too
+    if (p.rho[i] < sigma) p.rho[i] = sigma;  // a NaN stays for the health check
   }
 }
 

@@ -10,8 +10,9 @@
 // Under continuity density the package also floors each particle's density at the density
 // whose h is the cap (AUTODYN's SPH bounds its density by a minimum density factor the same
 // way): a particle far more rarefied than its neighbours takes their mass flux into its own
-// small density, and one step can drive it through zero. Floored, its h is the cap, and the
-// density pass gives it its kernel sum instead (sim/sph/density_pass.cpp).
+// small density, and one step can drive it through zero. At its cap the density pass divides
+// that flux by the kernel sum instead (sim/sph/density_pass.cpp), so its density changes at
+// the rate its neighbours' divergence gives, and rises again if it is compressed.
 #include <optional>
 
 #include "sim/run/physics_package.hpp"
@@ -31,17 +32,19 @@ class SmoothingLengthCapPackage : public PhysicsPackage {
   // The cap of a particle not carrying one yet (a new run; a restart of a run without it) is
   // factor x its present h.
   void registerFields(ParticleSet& p) override;
-  // Continuity density: the floor, on the predicted state and on the step's end.
+  // The predicted state held to the caps before h is set from it.
   void afterDrift(ParticleSet& p, const PackageContext& c) override;
-  void finalize(ParticleSet& p, const PackageContext& c) override;
+  // Each h held at its cap (an h integrated by the seed's dh/dt or predicted between an
+  // individual step's ends can pass it) and, under continuity density, each density at its
+  // floor; finite values only, so a NaN still reaches the health check. The run calls it
+  // before every equation-of-state evaluation (sim/run/simulation.cpp).
+  void holdToCaps(ParticleSet& p, const ParticleMask* only) const;
 
   // The caps of the real particles (the column's first numReal entries), or nullptr when `p`
   // carries none. Valid until `p` is resized (ghosts added or dropped).
   static const double* caps(const ParticleSet& p);
 
  private:
-  void floorDensity(ParticleSet& p, const ParticleMask* only) const;
-
   double factor_;
   double eta_;
   bool continuity_;
