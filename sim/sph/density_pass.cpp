@@ -208,7 +208,7 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
         failedIndex = std::min(failedIndex, i);
         continue;
       }
-      // At the cap h no longer follows the density, so the grad-h term is absent (omega = 1).
+      // A capped h does not follow the density: no grad-h term (omega = 1).
       double omega = tiedH && !capped ? 1.0 + h / (D * sigma) * dS : 1.0;
       if constexpr (RZ) {
         // rho = eta / (2 pi rt(h)) also depends on h through rt: with h tied to eta the

@@ -42,8 +42,8 @@ struct HydroWorkspace {
   // Largest h of each real particle (SphOptions::hMaxFactor), or nullptr: h is not capped. The
   // run points it at the particles' column before each pass that sets h.
   const double* hCap = nullptr;
-  // Number of neighbours in each real particle's gather list, the particle itself included (1: it
-  // reaches nothing, so it exchanges nothing and its sound speed sets no step).
+  // Number of neighbours in each real particle's gather list, the particle itself included
+  // (diagnostics, the neighbour check and the decomposition's costs).
   std::vector<std::uint32_t> neighbourCount;
 };
 
