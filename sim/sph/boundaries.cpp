@@ -19,24 +19,45 @@ std::vector<const Field*> haloFields(const ParticleSet& p) {
   return out;
 }
 
-// Copies the halo fields of particle `from` to `to` as seen through mirrors across the axes set
-// in `flips`: a vector's component along a reflected axis changes sign, and so does a symmetric
-// tensor's component that pairs a reflected axis with one that is not.
-void copyHaloFields(ParticleSet& p, const std::vector<const Field*>& halo, std::size_t from,
-                    std::size_t to, std::uint8_t flips) {
+// Copies the halo fields of `count` particles, the k-th from(k) to to(k), as seen through
+// mirrors across the axes set in flips(k): a vector's component along a reflected axis changes
+// sign, and so does a symmetric tensor's component that pairs a reflected axis with one that is
+// not. Column by column (each column looked up once), the copies of a column shared among the
+// threads in the same static ranges, so a column's copies need no barrier between columns. A
+// source must not be among the destinations.
+template <class From, class To, class Flips>
+void copyHaloFields(ParticleSet& p, const std::vector<const Field*>& halo, std::size_t count,
+                    From from, To to, Flips flips) {
+  constexpr std::size_t kThreadedFrom = 2048;  // below this a thread team costs more than it saves
+#pragma omp parallel if (count >= kThreadedFrom)
   for (const Field* f : halo) {
     switch (f->storage.kind) {
-      case FieldStorage::Kind::Int32: (p.*f->storage.int32)[to] = (p.*f->storage.int32)[from]; continue;
-      case FieldStorage::Kind::Int64: (p.*f->storage.int64)[to] = (p.*f->storage.int64)[from]; continue;
+      case FieldStorage::Kind::Int32: {
+        std::vector<std::int32_t>& column = p.*f->storage.int32;
+#pragma omp for schedule(static) nowait
+        for (std::size_t k = 0; k < count; ++k) column[to(k)] = column[from(k)];
+        continue;
+      }
+      case FieldStorage::Kind::Int64: {
+        std::vector<std::int64_t>& column = p.*f->storage.int64;
+#pragma omp for schedule(static) nowait
+        for (std::size_t k = 0; k < count; ++k) column[to(k)] = column[from(k)];
+        continue;
+      }
       default: break;
     }
     for (int c = 0; c < f->spec.components; ++c) {
       std::vector<double>& column = p.column(*f, c);
-      bool flip = false;
-      if (f->spec.parity == MirrorParity::Vector) flip = ((flips >> c) & 1u) != 0;
-      if (f->spec.parity == MirrorParity::SymmetricTensor)
-        flip = (((flips >> kSymRow[c]) ^ (flips >> kSymCol[c])) & 1u) != 0;
-      column[to] = flip ? -column[from] : column[from];
+      const MirrorParity parity = f->spec.parity;
+      const int row = parity == MirrorParity::SymmetricTensor ? kSymRow[c] : c;
+      const int col = parity == MirrorParity::SymmetricTensor ? kSymCol[c] : c;
+#pragma omp for schedule(static) nowait
+      for (std::size_t k = 0; k < count; ++k) {
+        bool flip = false;
+        if (parity == MirrorParity::Vector) flip = ((flips(k) >> c) & 1u) != 0;
+        if (parity == MirrorParity::SymmetricTensor) flip = (((flips(k) >> row) ^ (flips(k) >> col)) & 1u) != 0;
+        column[to(k)] = flip ? -column[from(k)] : column[from(k)];
+      }
     }
   }
 }
@@ -122,16 +143,17 @@ void Boundaries::makeGhosts(ParticleSet& p, double supportFactor, const Communic
     p.resize(first + images.size());
     p.ghostSource.resize(p.numGhosts());
     flips_.resize(p.numGhosts());
-    const std::vector<const Field*> halo = haloFields(p);
+    // The halo fields from each particle (itself possibly an earlier face's ghost) through this
+    // face's mirror, then the images placed.
+    const std::uint8_t faceFlip = face.periodic ? 0 : static_cast<std::uint8_t>(1u << d);
+    copyHaloFields(
+        p, haloFields(p), images.size(), [&](std::size_t k) { return images[k]; },
+        [first](std::size_t k) { return first + k; }, [faceFlip](std::size_t) { return faceFlip; });
 #pragma omp parallel for schedule(static)
     for (std::size_t k = 0; k < images.size(); ++k) {
       const std::size_t i = images[k], g = first + k;
       const std::size_t source = i < p.numReal ? i : p.ghostSource[i - p.numReal];
       std::uint8_t flips = i < p.numReal ? 0 : flips_[i - p.numReal];
-      // Copy the halo fields from particle i (itself possibly a ghost) through this face's
-      // mirror, then place the image.
-      const std::uint8_t faceFlip = face.periodic ? 0 : static_cast<std::uint8_t>(1u << d);
-      copyHaloFields(p, halo, i, g, faceFlip);
       for (int c = 0; c < 3; ++c) p.x[c][g] = p.x[c][i];
       if (face.periodic) {
         p.x[d][g] += face.upper ? -face.period : face.period;
@@ -146,10 +168,10 @@ void Boundaries::makeGhosts(ParticleSet& p, double supportFactor, const Communic
 }
 
 void Boundaries::refreshGhosts(ParticleSet& p) const {
-  const std::vector<const Field*> halo = haloFields(p);
   const std::size_t nReal = p.numReal;
-  for (std::size_t g = 0; g < numBoundaryGhosts(); ++g)
-    copyHaloFields(p, halo, p.ghostSource[g], nReal + g, flips_[g]);
+  copyHaloFields(
+      p, haloFields(p), numBoundaryGhosts(), [&p](std::size_t g) { return p.ghostSource[g]; },
+      [nReal](std::size_t g) { return nReal + g; }, [this](std::size_t g) { return flips_[g]; });
 }
 
 void Boundaries::refreshGhostTensor(const ParticleSet& p, std::vector<double>& tensor) const {
@@ -162,19 +184,6 @@ void Boundaries::refreshGhostTensor(const ParticleSet& p, std::vector<double>& t
         ghost[3 * a + b] = flip ? -source[3 * a + b] : source[3 * a + b];
       }
   }
-}
-
-double Boundaries::faceDistance(const Face& face, double x) {
-  return face.upper ? face.position - x : x - face.position;
-}
-
-bool Boundaries::reachesLanding(const Face& face, double x, double reach) {
-  if (faceDistance(face, x) < reach) return true;
-  if (!face.periodic) return false;
-  // The partner face: images of particles near this face are shifted across to it.
-  const double partner = face.upper ? face.position - face.period : face.position + face.period;
-  const double toPartner = face.upper ? x - partner : partner - x;
-  return toPartner < reach;
 }
 
 bool Boundaries::layersCover(const ParticleSet& p, double supportFactor) const {

@@ -60,11 +60,21 @@ class Boundaries {
     double position;   // coordinate of the face
     double period;     // box length, periodic faces only
   };
-  // Signed distance of coordinate x inside the face (positive inside the domain).
-  static double faceDistance(const Face& face, double x);
+  // Signed distance of coordinate x inside the face (positive inside the domain). Inline: it
+  // runs for every particle and face at every (sub-)step.
+  static double faceDistance(const Face& face, double x) {
+    return face.upper ? face.position - x : x - face.position;
+  }
   // True if a particle at x with support `reach` needs this face's images: it reaches the face
   // (or, for a periodic face, the partner face where the images land).
-  static bool reachesLanding(const Face& face, double x, double reach);
+  static bool reachesLanding(const Face& face, double x, double reach) {
+    if (faceDistance(face, x) < reach) return true;
+    if (!face.periodic) return false;
+    // The partner face: images of particles near this face are shifted across to it.
+    const double partner = face.upper ? face.position - face.period : face.position + face.period;
+    const double toPartner = face.upper ? x - partner : partner - x;
+    return toPartner < reach;
+  }
 
   Geometry geometry_;
   int dim_;

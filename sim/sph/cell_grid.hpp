@@ -5,6 +5,7 @@
 // deterministic.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -32,9 +33,13 @@ class CellGrid {
   // Appends every particle j within `radius` of `point` whose cell's widest support could reach
   // it: a query of radius reachInto(point) that skips the cells whose own particles' supports
   // stop short of the point (the wide kernels of a hot centre are visited only where they reach).
-  // After recordReach; the caller tests r < support h_j itself.
+  // After recordReach; the caller tests r < support h_j itself. With `beyond` > 0 only the
+  // particles at or past that distance whose cell's widest support exceeds it are wanted (the
+  // partners a particle of support `beyond` does not reach itself): cells whose own supports
+  // stop at `beyond`, and cells wholly within it, are skipped.
   template <int D>
-  void queryReaching(const double* point, double radius, std::vector<std::uint32_t>& out) const;
+  void queryReaching(const double* point, double radius, std::vector<std::uint32_t>& out,
+                     double beyond = 0.0) const;
 
   // Cell index of each real particle under this grid; used to reorder particles for locality.
   std::vector<std::uint64_t> cellKeys(const ParticleSet& p, std::size_t count) const;
@@ -83,8 +88,8 @@ void CellGrid::query(const ParticleSet&, const double* point, double radius,
 }
 
 template <int D>
-void CellGrid::queryReaching(const double* point, double radius,
-                             std::vector<std::uint32_t>& out) const {
+void CellGrid::queryReaching(const double* point, double radius, std::vector<std::uint32_t>& out,
+                             double beyond) const {
   long lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   for (int d = 0; d < D; ++d) {
     lo[d] = cellCoord(point[d] - radius, d);
@@ -97,10 +102,11 @@ void CellGrid::queryReaching(const double* point, double radius,
         const long at[3] = {cx, cy, cz};
         const std::size_t c = static_cast<std::size_t>((cz * cells_[1] + cy) * cells_[0] + cx);
         const double own = ownReach_[c];
-        if (own == 0.0) continue;
-        // Distance from the point to the cell; the edge cells also hold what lies beyond the
-        // grid (cellCoord clamps), so they are open on that side.
-        double gap2 = 0.0;
+        if (own == 0.0 || own <= beyond) continue;
+        // Nearest and farthest distance from the point to the cell; the edge cells also hold
+        // what lies beyond the grid (cellCoord clamps), so they are open on that side.
+        double gap2 = 0.0, far2 = 0.0;
+        bool open = false;
         for (int d = 0; d < D; ++d) {
           const double low = origin_[d] + static_cast<double>(at[d]) * cellSize_;
           const double high = low + cellSize_;
@@ -108,16 +114,21 @@ void CellGrid::queryReaching(const double* point, double radius,
           if (point[d] < low && at[d] > 0) gap = low - point[d];
           else if (point[d] > high && at[d] < cells_[d] - 1) gap = point[d] - high;
           gap2 += gap * gap;
+          const double far = std::max(std::abs(point[d] - low), std::abs(high - point[d]));
+          far2 += far * far;
+          open = open || at[d] == 0 || at[d] == cells_[d] - 1;
         }
         if (gap2 >= own * own) continue;
-        const double limit2 = std::min(r2, own * own);
+        // Every particle in it nearer than `beyond` (with a margin for the rounding of far2).
+        if (!open && far2 * (1.0 + 1e-12) < beyond * beyond) continue;
+        const double limit2 = std::min(r2, own * own), inner2 = beyond * beyond;
         for (std::uint32_t k = cellStart_[c]; k < cellStart_[c + 1]; ++k) {
           double d2 = 0.0;
           for (int d = 0; d < D; ++d) {
             const double dx = sortedPos_[d][k] - point[d];
             d2 += dx * dx;
           }
-          if (d2 < limit2) out.push_back(sorted_[k]);
+          if (d2 < limit2 && d2 >= inner2) out.push_back(sorted_[k]);
         }
       }
 }

@@ -108,7 +108,7 @@ void NeighbourLists::buildActivePairs(const ParticleSet& p, const CellGrid& grid
       const double reach = grid.reachInto(xi);
       if (reach <= own) continue;  // no kernel wider than i's own reaches here
       found.clear();
-      grid.queryReaching<D>(xi, reach, found);
+      grid.queryReaching<D>(xi, reach, found, own);
       std::vector<std::uint32_t>& mine = extra[k];
       for (std::uint32_t j : found) {
         double r2 = 0.0;

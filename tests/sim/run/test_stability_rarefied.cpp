@@ -46,16 +46,17 @@ Ran run(const std::string& toml) {
 // A block of granite rubble (no tension) 40 x 40 spacings (1 cm) at rest and zero pressure (it
 // stays so: continuity density has no free-surface deficit), 2D planar, and `extra` bodies.
 std::string blockScene(const std::string& sph, const std::string& extra,
-                       const std::string& block = "min = [0.0, 0.0]\nmax = [\"0.4 m\", \"0.4 m\"]\n") {
+                       const std::string& block = "min = [0.0, 0.0]\nmax = [\"0.4 m\", \"0.4 m\"]\n",
+                       const std::string& dimension = "2d", const std::string& time = "") {
   return R"(
 [scene]
 name = "rarefied"
-dimension = "2d"
+dimension = ")" + dimension + R"("
 [sph]
 form = "interface"
 )" + sph + R"(
 [time]
-t_end = "150 us"
+)" + (time.find("t_end") == std::string::npos ? "t_end = \"150 us\"\n" : "") + time + R"(
 [[materials]]
 name = "granite"
 eos = "tillotson"
@@ -95,6 +96,15 @@ std::size_t fragmentIndex(const ParticleSet& p) {
   return k;
 }
 
+// The fragment's id: it follows the block's 40 x 40 particles.
+constexpr std::int64_t kFragmentId = 1600;
+
+std::size_t particleWithId(const ParticleSet& p, std::int64_t id) {
+  for (std::size_t i = 0; i < p.numReal; ++i)
+    if (p.id[i] == id) return i;
+  return p.numReal;
+}
+
 TEST(StabilityRarefied, AtTheCapALeavingParticleKeepsItsKernel) {
   const std::string summation = "density = \"summation\"\n";
   const Ran free = run(blockScene(summation, kLeaving));
@@ -116,6 +126,75 @@ TEST(StabilityRarefied, AtTheCapALeavingParticleKeepsItsKernel) {
   // sigma / cap^2, sigma = 10 / (7 pi) for the 2D cubic spline (Monaghan 1992).
   const double own = 2680.0 * 0.01 * 0.01 * 10.0 / (7.0 * std::numbers::pi) / (cap * cap);
   EXPECT_NEAR(capped.final.rho[kc], own, 1e-9 * own);
+}
+
+// The same leaving particle in RZ (a ring leaving the block's outer face, r from 0.40 m, in a
+// block r < 0.4 m on the axis) and with individual time steps: the cap holds in every geometry
+// and stepping, and the ring flies on.
+TEST(StabilityRarefied, AtTheCapALeavingRingKeepsItsKernelInRZAndWithIndividualSteps) {
+  const std::string summation = "density = \"summation\"\nh_max_factor = 4\n";
+  const std::string onTheAxis = "min = [0.0, 0.0]\nmax = [\"0.4 m\", \"0.4 m\"]\n";
+  const double cap = 4.0 * 1.2 * 0.01;
+  for (const std::string time : {"", "stepping = \"individual\"\n"}) {
+    const Ran rz = run(blockScene(summation, kLeaving, onTheAxis, "rz", time));
+    ASSERT_TRUE(rz.outcome.ok) << rz.outcome.error;
+    const std::size_t k = fragmentIndex(rz.final);
+    ASSERT_LT(k, rz.final.numReal);
+    std::printf("  RZ%s: ring h %.4g m at r = %.3g m\n", time.empty() ? "" : ", individual steps",
+                rz.final.h[k], rz.final.x[0][k]);
+    EXPECT_NEAR(rz.final.h[k], cap, 1e-12 * cap);
+    EXPECT_GT(rz.final.x[0][k], 0.80);
+  }
+}
+
+// Under continuity density a particle leaving the block rarefies while it parts (its neighbours
+// recede: to 2080 kg/m^3 uncapped, measured) and so reaches its cap, here its first h, where its
+// density is floored at the density of that h, the block's own; flying into a second block it is
+// compressed again and must leave the cap: its density is its own, floored only while its h
+// would pass the cap (a review found it stuck at the floor and the cap, fixed in 636e61f). Also
+// with individual time steps.
+const char* kIntoASecondBlock = R"(
+[[bodies]]
+name = "second_block"
+material = "granite"
+shape = "box"
+min = ["0.60 m", "0.10 m"]
+max = ["0.80 m", "0.30 m"]
+spacing = "1 cm"
+density = "2680 kg/m^3"
+pressure = 0.0
+)";
+
+TEST(StabilityRarefied, ACappedParticleCompressedAgainLeavesItsCap) {
+  const std::string continuity = "density = \"continuity\"\nh_max_factor = 1\n";
+  const double cap = 1.0 * 1.2 * 0.01;
+  // The fragment leaves at 3 km/s from x = 0.405 m: in flight at 50 us (x = 0.555 m), pressed
+  // into the second block's face (at 0.60 m) at 68 us, its most compressed (measured: 3408
+  // kg/m^3, h 0.887 of the cap; 2692 at 60 us, 2928 at 72 us, back at the cap by 80 us as it
+  // rebounds).
+  for (const std::string stepping : {"", "stepping = \"individual\"\n"}) {
+    const std::string extra = std::string(kLeaving) + kIntoASecondBlock;
+    const Ran flying = run(blockScene(continuity, extra, "min = [0.0, 0.0]\nmax = [\"0.4 m\", \"0.4 m\"]\n",
+                                      "2d", stepping + "t_end = \"50 us\"\n"));
+    const Ran arrived = run(blockScene(continuity, extra, "min = [0.0, 0.0]\nmax = [\"0.4 m\", \"0.4 m\"]\n",
+                                       "2d", stepping + "t_end = \"68 us\"\n"));
+    ASSERT_TRUE(flying.outcome.ok) << flying.outcome.error;
+    ASSERT_TRUE(arrived.outcome.ok) << arrived.outcome.error;
+    const std::size_t kf = particleWithId(flying.final, kFragmentId);
+    const std::size_t ka = particleWithId(arrived.final, kFragmentId);
+    ASSERT_LT(kf, flying.final.numReal);
+    ASSERT_LT(ka, arrived.final.numReal);
+    std::printf("  %s: in flight x %.3g m, h/cap %.4f, rho %.4g; arrived x %.3g m, h/cap %.4f, rho %.4g\n",
+                stepping.empty() ? "global" : "individual", flying.final.x[0][kf],
+                flying.final.h[kf] / cap, flying.final.rho[kf], arrived.final.x[0][ka],
+                arrived.final.h[ka] / cap, arrived.final.rho[ka]);
+    // In flight: at the cap (to the 1e-3 the continuity cap is rounded to) and the floor.
+    EXPECT_NEAR(flying.final.h[kf], cap, 1e-3 * cap);
+    EXPECT_NEAR(flying.final.rho[kf], 2680.0, 1e-3 * 2680.0);
+    // Compressed: below the cap, denser than the floor (stuck at both before 636e61f).
+    EXPECT_LT(arrived.final.h[ka], 0.95 * cap);
+    EXPECT_GT(arrived.final.rho[ka], 1.1 * 2680.0);
+  }
 }
 
 // A particle of vapour at 4e9 J/kg (a 100 kt device's particles reach 3.7e10 J/kg) far from the
