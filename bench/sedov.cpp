@@ -9,6 +9,8 @@
 //   ejecta_bench_sedov [--n 50] [--threads T] [--kernel cubic_spline|wendland_c2|wendland_c4]
 //                      [--eta 1.2] [--t-end 0.05] [--conductivity A] [--balsara 0|1] [--json]
 //                      [--stepping global|individual] [--limiter-factor F]
+//                      [--alpha A] [--beta B] [--switch none|morris_monaghan]
+//                      [--reconstruction none|monotone|van_leer] [--gradients kernel|iad]
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -30,6 +32,8 @@ int main(int argc, char** argv) {
   bool balsara = false, json = false;
   std::string kernel = "cubic_spline", stepping = "global";
   int limiterFactor = 2;
+  double alpha = 1.0, beta = 2.0;
+  std::string viscositySwitch = "none", reconstruction = "none", gradients = "kernel";
   bench::Arguments args(argc, argv);
   for (std::string arg; args.next(arg);) {
     auto next = [&args] { return args.value(); };
@@ -43,6 +47,11 @@ int main(int argc, char** argv) {
     else if (arg == "--json") json = true;
     else if (arg == "--stepping") stepping = next();
     else if (arg == "--limiter-factor") limiterFactor = std::atoi(next());
+    else if (arg == "--alpha") alpha = std::atof(next());
+    else if (arg == "--beta") beta = std::atof(next());
+    else if (arg == "--switch") viscositySwitch = next();
+    else if (arg == "--reconstruction") reconstruction = next();
+    else if (arg == "--gradients") gradients = next();
     else { std::fprintf(stderr, "unknown option %s\n", arg.c_str()); return 2; }
   }
 
@@ -57,6 +66,26 @@ int main(int argc, char** argv) {
   scene.sph.eta = eta;
   scene.sph.conductivity = conductivity;
   scene.sph.balsara = balsara;
+  scene.sph.alpha = alpha;
+  scene.sph.beta = beta;
+  if (viscositySwitch != "none" && viscositySwitch != "morris_monaghan") {
+    std::fprintf(stderr, "--switch must be none or morris_monaghan, not %s\n", viscositySwitch.c_str());
+    return 2;
+  }
+  scene.sph.viscositySwitch =
+      viscositySwitch == "morris_monaghan" ? ViscositySwitch::MorrisMonaghan : ViscositySwitch::None;
+  if (reconstruction == "monotone") scene.sph.viscosityReconstruction = ViscosityReconstruction::Monotone;
+  else if (reconstruction == "van_leer") scene.sph.viscosityReconstruction = ViscosityReconstruction::VanLeer;
+  else if (reconstruction != "none") {
+    std::fprintf(stderr, "--reconstruction must be none, monotone or van_leer, not %s\n",
+                 reconstruction.c_str());
+    return 2;
+  }
+  if (gradients != "kernel" && gradients != "iad") {
+    std::fprintf(stderr, "--gradients must be kernel or iad, not %s\n", gradients.c_str());
+    return 2;
+  }
+  scene.sph.gradients = gradients == "iad" ? GradientScheme::IntegralApproach : GradientScheme::Kernel;
   scene.time.tEnd = tEnd;
   if (stepping != "global" && stepping != "individual") {
     std::fprintf(stderr, "--stepping must be global or individual, not %s\n", stepping.c_str());

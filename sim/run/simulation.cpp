@@ -13,6 +13,7 @@
 
 #include "sim/setup/bodies.hpp"
 #include "sim/sph/density_pass.hpp"
+#include "sim/sph/iad_matrix.hpp"
 #include "sim/run/packages/phase_fractions_package.hpp"
 #include "sim/run/packages/porosity_package.hpp"
 #include "sim/run/packages/smoothing_length_cap_package.hpp"
@@ -88,6 +89,12 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
       ws_(scene_.sph, scene_.geometry) {
   if (domain_.comm().sum(p_.numReal) == 0)
     throw SimulationError("scene '" + scene_.name + "' has no particles");
+  // The matrices need the halos' densities before the force pass, which a distributed step
+  // does not wait for (the scene reader refuses the other cases it is not built for).
+  if (scene_.sph.gradients == GradientScheme::IntegralApproach && domain_.distributed())
+    throw SimulationError(scene_.sourcePath + ": key 'sph.gradients': \"iad\" runs on one rank "
+                          "(its matrices need the halos' densities before the force pass); run "
+                          "without mpirun or with gradients = \"kernel\"");
   // A particle with 30x the neighbours its kernel should hold (the volume of the support in
   // particle volumes: 2 kappa eta, pi (kappa eta)^2, 4/3 pi (kappa eta)^3) has an h that stopped
   // tracking its density (the seed's dh/dt or constant h in a strong expansion); its pair loop
@@ -405,6 +412,12 @@ void Simulation::evaluateDerivatives(const std::vector<std::size_t>* active) {
   boundaries_.refreshGhosts(p_);
   const bool reconstruction = scene_.sph.viscosityReconstruction != ViscosityReconstruction::None;
   if (reconstruction) boundaries_.refreshGhostTensor(p_, ws_.velocityGradient);
+  if (scene_.sph.gradients == GradientScheme::IntegralApproach) {
+    // From the neighbours' densities, ghosts' included (global steps on one rank: the scene
+    // reader refuses the rest).
+    computeIadMatrices(p_, ws_);
+    boundaries_.refreshGhostTensor(p_, ws_.iadMatrix);
+  }
   const bool rz = ws_.geometry == Geometry::Axisymmetric;
   if (rz) {
     for (std::size_t g = p_.numReal; g < p_.numReal + boundaries_.numBoundaryGhosts(); ++g) {

@@ -27,6 +27,7 @@ Scene validate(const toml::table& doc, const std::string& sourceName) {
   readTime(root, scene.time);
   readOutput(root, scene.output, scene.time.tEnd);
   readMaterials(root, scene);
+  checkGradientScheme(root, scene);
   readBodies(root, scene);
   readDeposits(root, scene);
   readDetonations(root, scene);

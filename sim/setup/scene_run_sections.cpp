@@ -154,6 +154,15 @@ void readSph(const TableReader& root, SphOptions& sph) {
   sph.form = r.optEnum<MomentumForm>("form", {{"lagrangian", MomentumForm::Lagrangian},
                                               {"interface", MomentumForm::Interface}})
                  .value_or(sph.form);
+  sph.gradients = r.optEnum<GradientScheme>("gradients", {{"kernel", GradientScheme::Kernel},
+                                                         {"iad", GradientScheme::IntegralApproach}})
+                      .value_or(sph.gradients);
+  if (sph.gradients == GradientScheme::IntegralApproach) {
+    r.check(sph.form == MomentumForm::Lagrangian, "gradients",
+            "\"iad\" takes the Lagrangian form (form = \"interface\" is not built for it)");
+    r.check(sph.density == DensityMethod::Summation, "gradients",
+            "\"iad\" takes summation density (continuity density's rate is not built for it)");
+  }
   if (const toml::table* at = r.optTable("artificial_stress")) {
     const TableReader a(root.context(), *at, "sph.artificial_stress", "sph.artificial_stress");
     sph.artificialStress = a.optQuantity("epsilon", one).value_or(sph.artificialStress);
@@ -209,6 +218,21 @@ void readOutput(const TableReader& root, OutputOptions& out, double tEnd) {
                 formatQuantity(tEnd, Dimension::Time) + "; at most 100000 (an interval of at least " +
                 formatQuantity(tEnd / kMaxSnapshots, Dimension::Time) + ")");
   out.snapshots = r.optBool("snapshots").value_or(out.snapshots);
+}
+
+
+void checkGradientScheme(const TableReader& root, const Scene& scene) {
+  if (scene.sph.gradients != GradientScheme::IntegralApproach) return;
+  const TableReader sph(root.context(), *root.optTable("sph"), "sph", "sph");
+  sph.check(scene.geometry != Geometry::Axisymmetric, "gradients",
+            "\"iad\" is built for 1D, 2D and 3D, not RZ (its ring-weighted matrices are not)");
+  sph.check(scene.time.stepping == Stepping::Global, "gradients",
+            "\"iad\" runs with global time steps (time.stepping = \"global\"): the matrices of "
+            "particles between their steps are not kept");
+  for (const MaterialSpec& m : scene.materials)
+    sph.check(!m.strength.present && !m.fracture.present, "gradients",
+              "\"iad\" is built for fluids; material '" + m.name +
+                  "' has strength or fracture (the stress divergence keeps the kernel gradient)");
 }
 
 }  // namespace ejecta::scene_detail

@@ -88,6 +88,11 @@ std::vector<SceneTable> runTables() {
         choice("form", {"lagrangian", "interface"}, "\"lagrangian\"",
                "pair force: `\"lagrangian\"` (grad-h) or `\"interface\"` ((σ_i+σ_j)/(ρ_iρ_j): "
                "use it, with continuity density, for material interfaces; `docs/materials.md`)"),
+        choice("gradients", {"kernel", "iad"}, "\"kernel\"",
+               "the gradient of the pair terms: `\"kernel\"`, the kernel's own; `\"iad\"`: the "
+               "integral approach (García-Senz et al. 2012), exact for linear fields on any "
+               "particle arrangement; fluids, Lagrangian form, summation density, 1D/2D/3D, "
+               "global steps, one rank (`docs/verification.md`, \"Sharper shocks\")"),
         table("artificial_stress", "defaults below",
               "`[sph.artificial_stress]`: Monaghan (2000) against the tensile instability; "
               "solids only")}},

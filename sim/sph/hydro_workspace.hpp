@@ -39,6 +39,11 @@ struct HydroWorkspace {
   // corrected so that it is exact for a linear field; filled only when the viscosity
   // reconstructs velocities (SphOptions::viscosityReconstruction), empty otherwise.
   std::vector<double> velocityGradient;
+  // Integral-approach matrix C of every particle (real and ghost), 9 values per particle at
+  // 9 i + 3 a + b (symmetric), the inverse of tau_i = sum_j V_j W_ij(h_i) (x_j - x_i)(x)(x_j - x_i)
+  // over i's gather list; all zero where tau cannot be inverted (the pair terms then take the
+  // kernel gradient). Filled only with SphOptions::gradients = IntegralApproach.
+  std::vector<double> iadMatrix;
   // Largest h of each real particle (SphOptions::hMaxFactor), or nullptr: h is not capped. The
   // run points it at the particles' column before each pass that sets h.
   const double* hCap = nullptr;

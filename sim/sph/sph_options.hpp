@@ -28,6 +28,12 @@ enum class ViscositySwitch { None, MorrisMonaghan };
 // velocities.
 enum class ViscosityReconstruction { None, VanLeer, Monotone };
 
+// The kernel gradient the hydro pair terms use (docs/verification.md, "Sharper shocks"): Kernel,
+// the analytic grad W; IntegralApproach, García-Senz, Cabezón & Escartín's (2012, A&A 538, A9)
+// integral approach, C_i (x_j - x_i) W_ij with C_i the inverse of the kernel-weighted second
+// moment of i's neighbours, exact for linear fields on any particle arrangement.
+enum class GradientScheme { Kernel, IntegralApproach };
+
 struct SphOptions {
   KernelKind kernel = KernelKind::CubicSpline;
   DensityMethod density = DensityMethod::Summation;
@@ -54,6 +60,7 @@ struct SphOptions {
   // body it left (sim/run/packages/smoothing_length_cap_package.hpp).
   double hMaxFactor = 0.0;
   MomentumForm form = MomentumForm::Lagrangian;
+  GradientScheme gradients = GradientScheme::Kernel;
   // Monaghan (2000) / Gray, Monaghan & Swift (2001) artificial stress against the tensile
   // instability, applied to materials with strength: epsilon (0 = off; negative = the default,
   // 0.3 when the scene has a material with strength) and the exponent n of f = W(r)/W(dp).

@@ -1,0 +1,209 @@
+// Integral-approach gradients (sph.gradients = "iad", sim/sph/iad_matrix.hpp): the matrix
+// inverse, the exactness for linear fields on any arrangement of neighbours that is the method's
+// point, and the scenes it is refused for. Its runs against exact solutions are in
+// tests/sim/verify/test_verify_iad.cpp.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "sim/setup/scene.hpp"
+#include "sim/sph/iad_matrix.hpp"
+#include "sim/sph/kernel.hpp"
+
+namespace ejecta {
+namespace {
+
+// A random symmetric positive-definite D x D matrix (a sum of outer products).
+template <int D>
+void randomTau(std::mt19937& rng, double tau[9]) {
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int k = 0; k < 9; ++k) tau[k] = 0.0;
+  for (int n = 0; n < 2 * D + 3; ++n) {
+    double v[3] = {0.0, 0.0, 0.0};
+    for (int d = 0; d < D; ++d) v[d] = unit(rng);
+    for (int a = 0; a < D; ++a)
+      for (int b = 0; b < D; ++b) tau[3 * a + b] += v[a] * v[b];
+  }
+}
+
+template <int D>
+double inverseError(unsigned seed) {
+  std::mt19937 rng(seed);
+  double tau[9], C[9];
+  randomTau<D>(rng, tau);
+  EXPECT_TRUE(invertSymmetric<D>(tau, C));
+  double worst = 0.0;
+  for (int a = 0; a < D; ++a)
+    for (int b = 0; b < D; ++b) {
+      double product = 0.0;
+      for (int k = 0; k < D; ++k) product += C[3 * a + k] * tau[3 * k + b];
+      worst = std::max(worst, std::abs(product - (a == b ? 1.0 : 0.0)));
+    }
+  return worst;
+}
+
+TEST(IadGradients, TheMatrixIsTheInverseOfTau) {
+  // Round-off of a 3 x 3 cofactor inverse of a well-conditioned matrix: 1e-12.
+  for (unsigned seed = 1; seed <= 10; ++seed) {
+    EXPECT_LT(inverseError<1>(seed), 1e-12);
+    EXPECT_LT(inverseError<2>(seed), 1e-12);
+    EXPECT_LT(inverseError<3>(seed), 1e-12);
+  }
+}
+
+TEST(IadGradients, ASingularTauGivesNoMatrix) {
+  // Neighbours on a line in 2D and in a plane in 3D: tau has rank 1 and 2.
+  double line[9] = {1.0, 2.0, 0.0, 2.0, 4.0, 0.0, 0.0, 0.0, 0.0}, C[9];
+  EXPECT_FALSE(invertSymmetric<2>(line, C));
+  for (double c : C) EXPECT_EQ(c, 0.0);
+  double plane[9] = {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0};
+  EXPECT_FALSE(invertSymmetric<3>(plane, C));
+  double none[9] = {};
+  EXPECT_FALSE(invertSymmetric<1>(none, C));
+}
+
+// The IAD gradient of a linear field f = f0 + g . x at a particle among 40 random neighbours
+// (any volumes V_j, every neighbour on one side when oneSided, as at a free surface): with
+// A_ij = C_i (x_j - x_i) W_ij, sum_j V_j (f_j - f_i) A_ij = g exactly; the kernel gradient's
+// sum_j V_j (f_j - f_i) grad W_ij is off by tens of percent on such an arrangement.
+template <int D>
+void linearFieldErrors(unsigned seed, bool oneSided, double& iad, double& kernel) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0), volume(0.5e-6, 2e-6);
+  const double h = 0.01;
+  double g[3] = {0.0, 0.0, 0.0};
+  for (int d = 0; d < D; ++d) g[d] = 100.0 * unit(rng);
+  double x[40][3] = {}, V[40];
+  double tau[9] = {};
+  for (int k = 0; k < 40; ++k) {
+    for (int d = 0; d < D; ++d) x[k][d] = 1.9 * h * unit(rng) / std::sqrt(double(D));  // x_j - x_i
+    if (oneSided) x[k][0] = std::abs(x[k][0]);
+    V[k] = volume(rng);
+    double r2 = 0.0;
+    for (int d = 0; d < D; ++d) r2 += x[k][d] * x[k][d];
+    const double w = V[k] * kernelValue<CubicSplineKernel, D>(std::sqrt(r2), h);
+    for (int a = 0; a < D; ++a)
+      for (int b = 0; b < D; ++b) tau[3 * a + b] += w * x[k][a] * x[k][b];
+  }
+  double C[9];
+  ASSERT_TRUE(invertSymmetric<D>(tau, C));
+  double gIad[3] = {}, gKernel[3] = {};
+  for (int k = 0; k < 40; ++k) {
+    double r2 = 0.0, df = 0.0;
+    for (int d = 0; d < D; ++d) {
+      r2 += x[k][d] * x[k][d];
+      df += g[d] * x[k][d];
+    }
+    const double r = std::sqrt(r2);
+    const double W = kernelValue<CubicSplineKernel, D>(r, h);
+    const double dW = kernelDerivative<CubicSplineKernel, D>(r, h);
+    for (int a = 0; a < D; ++a) {
+      double Cx = 0.0;
+      for (int b = 0; b < D; ++b) Cx += C[3 * a + b] * x[k][b];
+      gIad[a] += V[k] * df * Cx * W;
+      gKernel[a] += V[k] * df * dW * (-x[k][a]) / r;  // grad_i W = W'(r) (x_i - x_j) / r
+    }
+  }
+  double scale = 0.0;
+  iad = kernel = 0.0;
+  for (int d = 0; d < D; ++d) {
+    scale = std::max(scale, std::abs(g[d]));
+    iad = std::max(iad, std::abs(gIad[d] - g[d]));
+    kernel = std::max(kernel, std::abs(gKernel[d] - g[d]));
+  }
+  iad /= scale;
+  kernel /= scale;
+}
+
+TEST(IadGradients, ExactForALinearFieldOnAnyArrangement) {
+  // Round-off of sums of 40 terms and a 3 x 3 inverse: 1e-11 of the largest component.
+  double worstKernel = 0.0;
+  for (unsigned seed = 1; seed <= 5; ++seed)
+    for (bool oneSided : {false, true}) {
+      double iad, kernel;
+      linearFieldErrors<1>(seed, oneSided, iad, kernel);
+      EXPECT_LT(iad, 1e-11);
+      worstKernel = std::max(worstKernel, kernel);
+      linearFieldErrors<2>(seed, oneSided, iad, kernel);
+      EXPECT_LT(iad, 1e-11);
+      worstKernel = std::max(worstKernel, kernel);
+      linearFieldErrors<3>(seed, oneSided, iad, kernel);
+      EXPECT_LT(iad, 1e-11);
+      worstKernel = std::max(worstKernel, kernel);
+    }
+  // The point of the method: the kernel gradient is not exact there (the test would not tell the
+  // two apart otherwise).
+  EXPECT_GT(worstKernel, 0.1);
+}
+
+// --- Where it is refused, with the key named ------------------------------------------------
+
+std::string gasScene(const std::string& dimension, const std::string& sph, const std::string& more = "") {
+  return R"(
+[scene]
+name = "iad"
+dimension = ")" + dimension + R"("
+[sph]
+gradients = "iad"
+)" + sph + R"(
+[time]
+t_end = "1 s"
+)" + more + R"(
+[[materials]]
+name = "gas"
+eos = "ideal_gas"
+gamma = 1.4
+[[bodies]]
+name = "box"
+material = "gas"
+shape = "box"
+min = [0.0, 0.0]
+max = [1.0, 1.0]
+spacing = 0.1
+density = 1.0
+pressure = 1.0
+)";
+}
+
+void expectRefused(const std::string& toml, const std::string& words) {
+  try {
+    parseScene(toml, "iad.toml");
+    ADD_FAILURE() << "accepted; expected a refusal naming sph.gradients";
+  } catch (const SceneError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("iad.toml"), std::string::npos) << message;
+    EXPECT_NE(message.find("sph.gradients"), std::string::npos) << message;
+    EXPECT_NE(message.find(words), std::string::npos) << message;
+  }
+}
+
+TEST(IadGradients, RefusedWhereItIsNotBuilt) {
+  EXPECT_NO_THROW(parseScene(gasScene("2d", ""), "iad.toml"));
+  expectRefused(gasScene("rz", ""), "RZ");
+  expectRefused(gasScene("2d", "density = \"continuity\"\n"), "summation density");
+  expectRefused(gasScene("2d", "form = \"interface\"\n"), "Lagrangian form");
+  expectRefused(gasScene("2d", "", "stepping = \"individual\"\n"), "global time steps");
+  const std::string granite = R"(
+[scene]
+name = "iad"
+dimension = "2d"
+[sph]
+gradients = "iad"
+[time]
+t_end = "1 s"
+[[materials]]
+name = "granite"
+eos = "tillotson"
+library = "granite"
+[materials.strength]
+model = "von_mises"
+yield_stress = "1 GPa"
+shear_modulus = "30 GPa"
+)";
+  expectRefused(granite, "granite");
+}
+
+}  // namespace
+}  // namespace ejecta
