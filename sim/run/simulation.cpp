@@ -89,12 +89,7 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
       ws_(scene_.sph, scene_.geometry) {
   if (domain_.comm().sum(p_.numReal) == 0)
     throw SimulationError("scene '" + scene_.name + "' has no particles");
-  // The matrices need the halos' densities before the force pass, which a distributed step
-  // does not wait for (the scene reader refuses the other cases it is not built for).
-  if (scene_.sph.gradients == GradientScheme::IntegralApproach && domain_.distributed())
-    throw SimulationError(scene_.sourcePath + ": key 'sph.gradients': \"iad\" runs on one rank "
-                          "(its matrices need the halos' densities before the force pass); run "
-                          "without mpirun or with gradients = \"kernel\"");
+  refuseUnbuiltGradients();
   // A particle with 30x the neighbours its kernel should hold (the volume of the support in
   // particle volumes: 2 kappa eta, pi (kappa eta)^2, 4/3 pi (kappa eta)^3) has an h that stopped
   // tracking its density (the seed's dh/dt or constant h in a strong expansion); its pair loop
@@ -466,6 +461,24 @@ void Simulation::evaluateDerivatives(const std::vector<std::size_t>* active) {
   }
   const PackageContext context = packageContext(active ? &activeMask_ : nullptr);
   for (const auto& package : packages_) package->evaluateDerivatives(p_, context);
+}
+
+void Simulation::refuseUnbuiltGradients() const {
+  // The scene reader refuses these with the line (sim/setup/scene_run_sections.cpp); scenes built
+  // in code (benches, tests) and the rank count reach only here.
+  const SphOptions& sph = scene_.sph;
+  if (sph.gradients != GradientScheme::IntegralApproach) return;
+  std::string why;
+  if (domain_.distributed())
+    why = "runs on one rank (its matrices need the halos' densities before the force pass)";
+  else if (scene_.geometry == Geometry::Axisymmetric) why = "is built for 1D, 2D and 3D, not RZ";
+  else if (p_.stressComponents() > 0) why = "is built for fluids (a material here has strength or fracture)";
+  else if (sph.form != MomentumForm::Lagrangian) why = "takes the Lagrangian form";
+  else if (sph.density != DensityMethod::Summation) why = "takes summation density";
+  else if (scene_.time.stepping != Stepping::Global) why = "runs with global time steps";
+  if (!why.empty())
+    throw SimulationError(scene_.sourcePath + ": key 'sph.gradients': \"iad\" " + why +
+                          "; use gradients = \"kernel\"");
 }
 
 void Simulation::smoothingLengthFromDensity() {

@@ -105,22 +105,25 @@ void CellGrid::queryReaching(const double* point, double radius, std::vector<std
         if (own == 0.0 || own <= beyond) continue;
         // Nearest and farthest distance from the point to the cell; the edge cells also hold
         // what lies beyond the grid (cellCoord clamps), so they are open on that side.
+        // The bounds are widened by the rounding of the binning (a particle may lie a few ulps
+        // of its coordinates outside the cell it was binned in), so that a skipped cell holds no
+        // particle the caller's exact test would keep.
         double gap2 = 0.0, far2 = 0.0;
         bool open = false;
         for (int d = 0; d < D; ++d) {
           const double low = origin_[d] + static_cast<double>(at[d]) * cellSize_;
           const double high = low + cellSize_;
+          const double pad = 1e-14 * (std::abs(low) + std::abs(high) + std::abs(point[d]));
           double gap = 0.0;
-          if (point[d] < low && at[d] > 0) gap = low - point[d];
-          else if (point[d] > high && at[d] < cells_[d] - 1) gap = point[d] - high;
+          if (point[d] < low && at[d] > 0) gap = std::max(low - point[d] - pad, 0.0);
+          else if (point[d] > high && at[d] < cells_[d] - 1) gap = std::max(point[d] - high - pad, 0.0);
           gap2 += gap * gap;
-          const double far = std::max(std::abs(point[d] - low), std::abs(high - point[d]));
+          const double far = std::max(std::abs(point[d] - low), std::abs(high - point[d])) + pad;
           far2 += far * far;
           open = open || at[d] == 0 || at[d] == cells_[d] - 1;
         }
         if (gap2 >= own * own) continue;
-        // Every particle in it nearer than `beyond` (with a margin for the rounding of far2).
-        if (!open && far2 * (1.0 + 1e-12) < beyond * beyond) continue;
+        if (!open && far2 < beyond * beyond) continue;  // every particle in it nearer than `beyond`
         const double limit2 = std::min(r2, own * own), inner2 = beyond * beyond;
         for (std::uint32_t k = cellStart_[c]; k < cellStart_[c + 1]; ++k) {
           double d2 = 0.0;

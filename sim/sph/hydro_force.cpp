@@ -10,6 +10,12 @@
 //   du_i/dt = sigma_i : L_i / rho_i,  L_i = -sum_j w_ij v_ij (x) grad W
 // with the same weights w (m_j/(Omega_i s_i) with grad W(h_i), or m_j/s_j with the averaged
 // gradient), so L_i is also the velocity gradient the stress rate uses.
+// With sph.gradients = "iad" (fluids, Lagrangian form) each grad W of i is replaced by its
+// integral-approach vector A_ij = C_i (x_j - x_i) W_ij(h_i), and j's by C_j (x_j - x_i) W_ij(h_j)
+// (sim/sph/iad_matrix.hpp); the viscosity takes their mean. The pairs stay antisymmetric. Unlike
+// the kernel gradient's, the mean vector need not point along x_ij, so a single approaching pair
+// may heat or cool by its viscosity (SPH-EXA clips each particle's viscous heating at zero, giving
+// up exact energy conservation; ejecta keeps the conservation).
 #include "sim/sph/hydro_force.hpp"
 
 #include "sim/solid/porosity.hpp"

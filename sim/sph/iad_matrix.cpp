@@ -6,6 +6,16 @@
 
 namespace ejecta {
 
+namespace {
+
+// det(tau) over the product of its diagonal: 1 for neighbours spread evenly in every direction,
+// 0 for neighbours on a line (2D) or a plane (3D). Below this the inverse would amplify the
+// neighbours' scatter across the thin direction into forces far beyond the kernel gradient's (a
+// filament, a fragment of a few particles), so the particle keeps the kernel gradient.
+constexpr double kWellConditioned = 1e-4;
+
+}  // namespace
+
 template <int D>
 bool invertSymmetric(const double tau[9], double C[9]) {
   for (int k = 0; k < 9; ++k) C[k] = 0.0;
@@ -16,7 +26,7 @@ bool invertSymmetric(const double tau[9], double C[9]) {
     return true;
   } else if constexpr (D == 2) {
     const double det = a * d - b * b;
-    if (!(det > 1e-12 * a * d)) return false;
+    if (!(det > kWellConditioned * a * d)) return false;
     C[0] = d / det;
     C[1] = C[3] = -b / det;
     C[4] = a / det;
@@ -25,7 +35,7 @@ bool invertSymmetric(const double tau[9], double C[9]) {
     // Cofactors of [[a b c] [b d e] [c e f]].
     const double A = d * f - e * e, B = c * e - b * f, Cc = b * e - c * d;
     const double det = a * A + b * B + c * Cc;
-    if (!(det > 1e-12 * a * d * f)) return false;
+    if (!(det > kWellConditioned * a * d * f)) return false;
     C[0] = A / det;
     C[1] = C[3] = B / det;
     C[2] = C[6] = Cc / det;

@@ -13,13 +13,14 @@
 namespace ejecta {
 
 // Fills ws.iadMatrix for the real particles from their gather lists (after the density pass and
-// the ghosts' refresh: it reads the neighbours' densities). A particle whose tau is singular to
-// round-off (its neighbours on a line or a plane) gets C = 0: the pair terms then use the kernel
+// the ghosts' refresh: it reads the neighbours' densities). A particle whose tau is singular or
+// nearly so (its neighbours on a line or a plane) gets C = 0: the pair terms then use the kernel
 // gradient for it.
 void computeIadMatrices(const ParticleSet& p, HydroWorkspace& ws);
 
 // The D x D inverse of the symmetric tau (row-major 3 x 3, components beyond D ignored) into C;
-// false (C all zero) when tau's determinant is below 1e-12 of the product of its diagonal.
+// false (C all zero) when tau is not positive or its determinant is below 1e-4 of the product of
+// its diagonal (neighbours nearly on a line or a plane).
 template <int D>
 bool invertSymmetric(const double tau[9], double C[9]);
 

@@ -191,9 +191,11 @@ TEST(StabilityRarefied, ACappedParticleCompressedAgainLeavesItsCap) {
     // In flight: at the cap (to the 1e-3 the continuity cap is rounded to) and the floor.
     EXPECT_NEAR(flying.final.h[kf], cap, 1e-3 * cap);
     EXPECT_NEAR(flying.final.rho[kf], 2680.0, 1e-3 * 2680.0);
-    // Compressed: below the cap, denser than the floor (stuck at both before 636e61f).
-    EXPECT_LT(arrived.final.h[ka], 0.95 * cap);
-    EXPECT_GT(arrived.final.rho[ka], 1.1 * 2680.0);
+    // Compressed: below the cap, denser than the floor (stuck at exactly both before 636e61f).
+    // Loose bounds (measured 0.887 and 1.27 at 68 us in both steppings) so that a few us either
+    // way in the moment of greatest compression (0.957 and 1.09 at 72 us) still passes.
+    EXPECT_LT(arrived.final.h[ka], 0.99 * cap);
+    EXPECT_GT(arrived.final.rho[ka], 1.02 * 2680.0);
   }
 }
 
