@@ -477,8 +477,8 @@ void Simulation::refuseUnbuiltGradients() const {
   else if (sph.density != DensityMethod::Summation) why = "takes summation density";
   else if (scene_.time.stepping != Stepping::Global) why = "runs with global time steps";
   if (!why.empty())
-    throw SimulationError(scene_.sourcePath + ": key 'sph.gradients': \"iad\" " + why +
-                          "; use gradients = \"kernel\"");
+    throw SimulationError((scene_.sourcePath.empty() ? "scene '" + scene_.name + "'" : scene_.sourcePath) +
+                          ": key 'sph.gradients': \"iad\" " + why + "; use gradients = \"kernel\"");
 }
 
 void Simulation::smoothingLengthFromDensity() {
