@@ -19,6 +19,7 @@
 #include "sim/sph/iad_matrix.hpp"
 #include "sim/sph/kernel.hpp"
 #include "support/periodic_blast.hpp"
+#include "support/quarter_blast.hpp"
 
 namespace ejecta {
 namespace {
@@ -197,66 +198,9 @@ TEST(IadGradients, IsIndependentOfThreadCount) {
 // A blast in a walled box and its quarter with walls on the symmetry axes: the mirror ghosts must
 // carry C with the signs a reflection gives (C_xy reverses), or the particles beside the axes feel
 // other forces than in the full box.
-std::string wallBlast(double low, double energy) {
-  const std::string lo = std::to_string(low);
-  return R"(
-[scene]
-name = "iad_wall_blast"
-dimension = "2d"
-[domain]
-x = { min = )" + lo + R"(, max = 0.3, boundary = "wall" }
-y = { min = )" + lo + R"(, max = 0.3, boundary = "wall" }
-[sph]
-gradients = "iad"
-[time]
-t_end = 0.01
-[output]
-snapshots = false
-[[materials]]
-name = "gas"
-eos = "ideal_gas"
-gamma = 1.4
-[[bodies]]
-name = "box"
-material = "gas"
-shape = "box"
-min = [)" + lo + ", " + lo + R"(]
-max = [0.3, 0.3]
-spacing = 0.0125
-density = 1.0
-pressure = 1e-4
-[[energy_deposits]]
-name = "blast"
-energy = )" + std::to_string(energy) + R"(
-center = [0.0, 0.0]
-radius = 0.04
-)";
-}
-
 TEST(IadGradients, QuarterDomainWithMirrorWallsMatchesTheFullBox) {
-  auto run = [](const std::string& source) {
-    Simulation sim = makeSimulation(parseScene(source, "iad_wall_blast.toml"), 1);
-    RunOptions options;
-    options.threads = 1;
-    EXPECT_TRUE(runSimulation(sim, options).ok);
-    return sim.particles();
-  };
-  const ParticleSet full = run(wallBlast(-0.3, 0.02)), quarter = run(wallBlast(0.0, 0.005));
-  double worstPosition = 0.0, worstPressure = 0.0, peak = 0.0;
-  for (std::size_t i = 0; i < full.numReal; ++i) peak = std::max(peak, full.P[i]);
-  for (std::size_t q = 0; q < quarter.numReal; ++q) {
-    std::size_t best = 0;
-    double bestD2 = std::numeric_limits<double>::max();
-    for (std::size_t i = 0; i < full.numReal; ++i) {
-      const double dx = full.x[0][i] - quarter.x[0][q], dy = full.x[1][i] - quarter.x[1][q];
-      if (dx * dx + dy * dy < bestD2) {
-        bestD2 = dx * dx + dy * dy;
-        best = i;
-      }
-    }
-    worstPosition = std::max(worstPosition, std::sqrt(bestD2));
-    worstPressure = std::max(worstPressure, std::abs(full.P[best] - quarter.P[q]) / peak);
-  }
+  const test::QuarterMismatch m = test::quarterAgainstFullBox("[sph]\ngradients = \"iad\"\n");
+  const double worstPosition = m.position, worstPressure = m.pressure;
   std::printf("  quarter against full box: position %.2e m, pressure %.2e of the peak\n",
               worstPosition, worstPressure);
   // The same particles and arithmetic with sums in another order: round-off, as the

@@ -16,6 +16,7 @@
 #include "sim/io/snapshot.hpp"
 #include "sim/sph/velocity_reconstruction.hpp"
 #include "support/periodic_blast.hpp"
+#include "support/quarter_blast.hpp"
 #include "support/viscosity_problems.hpp"
 
 namespace fs = std::filesystem;
@@ -279,72 +280,11 @@ TEST(ViscosityReconstruction, RestartMatchesAnUninterruptedRunBitForBit) {
 // The blast in a box with walls, and its quarter with walls on the symmetry axes: the mirror
 // ghosts must carry the gradient with the signs a reflection gives (dv_x/dy and dv_y/dx reverse),
 // or the particles beside the symmetry axes feel a different viscosity from the full run's.
-std::string wallBlast(double xMin, double energy, const std::string& reconstruction) {
-  const std::string lo = std::to_string(xMin);
-  return R"(
-[scene]
-name = "wall_blast"
-dimension = "2d"
-[domain]
-x = { min = )" + lo + R"(, max = 0.3, boundary = "wall" }
-y = { min = )" + lo + R"(, max = 0.3, boundary = "wall" }
-[sph.viscosity]
-reconstruction = ")" + reconstruction + R"("
-[time]
-t_end = 0.01
-[output]
-snapshots = false
-[[materials]]
-name = "gas"
-eos = "ideal_gas"
-gamma = 1.4
-[[bodies]]
-name = "box"
-material = "gas"
-shape = "box"
-min = [)" + lo + ", " + lo + R"(]
-max = [0.3, 0.3]
-spacing = 0.0125
-density = 1.0
-pressure = 1e-4
-[[energy_deposits]]
-name = "blast"
-energy = )" + std::to_string(energy) + R"(
-center = [0.0, 0.0]
-radius = 0.04
-)";
-}
-
 TEST(ViscosityReconstruction, QuarterDomainWithMirrorWallsMatchesTheFullBox) {
-  auto run = [](const std::string& source) {
-    const Scene scene = parseScene(source, "wall_blast.toml");
-    MaterialTable materials = MaterialTable::fromScene(scene);
-    ParticleSet p = buildParticles(scene, materials);
-    Simulation sim(scene, std::move(p), std::move(materials), 1);
-    RunOptions options;
-    options.threads = 1;
-    const RunOutcome r = runSimulation(sim, options);
-    EXPECT_TRUE(r.ok) << r.error;
-    return sim.particles();
-  };
   for (const char* rec : {"none", "van_leer", "monotone"}) {
-    const ParticleSet full = run(wallBlast(-0.3, 0.02, rec));
-    const ParticleSet quarter = run(wallBlast(0.0, 0.005, rec));
-    double worstPosition = 0.0, worstPressure = 0.0, peak = 0.0;
-    for (std::size_t i = 0; i < full.numReal; ++i) peak = std::max(peak, full.P[i]);
-    for (std::size_t q = 0; q < quarter.numReal; ++q) {
-      std::size_t best = 0;
-      double bestD2 = std::numeric_limits<double>::max();
-      for (std::size_t i = 0; i < full.numReal; ++i) {
-        const double dx = full.x[0][i] - quarter.x[0][q], dy = full.x[1][i] - quarter.x[1][q];
-        if (dx * dx + dy * dy < bestD2) {
-          bestD2 = dx * dx + dy * dy;
-          best = i;
-        }
-      }
-      worstPosition = std::max(worstPosition, std::sqrt(bestD2));
-      worstPressure = std::max(worstPressure, std::abs(full.P[best] - quarter.P[q]) / peak);
-    }
+    const test::QuarterMismatch m = test::quarterAgainstFullBox(
+        std::string("[sph.viscosity]\nreconstruction = \"") + rec + "\"\n");
+    const double worstPosition = m.position, worstPressure = m.pressure;
     std::printf("quarter against full box (%s): position %.2e m, pressure %.2e of the peak\n",
                 rec, worstPosition, worstPressure);
     // Same particles and the same arithmetic with the sums in another order: round-off (measured
