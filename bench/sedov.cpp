@@ -4,7 +4,8 @@
 // (exact shock radius 0.3475, peak density 4).
 // Prints N, steps, mean neighbours, wall time, particle-updates per second (the particle-steps
 // over the wall time: N x steps with global steps, the active particles' updates with
-// individual ones) and the L1 density error (mean over particles of |rho - rho_exact(r)|).
+// individual ones), the L1 density error (mean over particles of |rho - rho_exact(r)|), the
+// binned peak density over the jump and the hot centre's median pressure over the exact.
 //
 //   ejecta_bench_sedov [--n 50] [--threads T] [--kernel cubic_spline|wendland_c2|wendland_c4]
 //                      [--eta 1.2] [--t-end 0.05] [--conductivity A] [--balsara 0|1] [--json]
@@ -19,6 +20,7 @@
 // particle_updates, L1_density) and DIR/sedov_3d_error_vs_cost.png (L1 against wall time, one
 // line per variant, the peers' published L1 at N = 125,000 as dashed lines). About 3 minutes
 // on 2 cores.
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -35,6 +37,7 @@
 #include "sim/exact/sedov.hpp"
 #include "sim/run/run.hpp"
 #include "sim/run/simulation.hpp"
+#include "sim/verify/blast_metrics.hpp"
 #include "render/charts.hpp"
 
 using namespace ejecta;
@@ -53,6 +56,7 @@ struct Result {
   std::size_t N = 0;
   long steps = 0;
   double meanNeighbours = 0.0, wall = 0.0, l1 = 0.0, energyError = 0.0, shockRadius = 0.0;
+  double peakDensityRatio = 0.0, centrePressureRatio = 0.0;  // sim/verify/blast_metrics.hpp
   double particleSteps = 0.0;
   int threads = 1;
   bool individual = false;
@@ -140,6 +144,11 @@ Result runSedov(const Scene& scene, int n, int threads) {
     r.l1 += std::abs(q.rho[k] - sedov.at(rk, sim.time()).rho);
   }
   r.l1 /= static_cast<double>(q.numReal);
+  // The binned peak over the strong-shock jump (gamma + 1)/(gamma - 1) = 4, bins one spacing wide.
+  const std::array<double, 3> origin{0.0, 0.0, 0.0};
+  r.peakDensityRatio =
+      verify::blastShock(q, origin, 3, dx, 0.5).density / sedov.postShockDensity();
+  r.centrePressureRatio = verify::centrePressureRatio(q, origin, 3, sedov, sim.time());
   r.N = N;
   r.steps = sim.stepCount();
   r.meanNeighbours = sim.meanNeighbours();
@@ -258,9 +267,11 @@ int main(int argc, char** argv) {
                 "\"threads\": %d, \"particle_updates_per_second\": %.4g, "
                 "\"updates_per_second_per_core\": %.4g, \"L1_density\": %.4f, "
                 "\"energy_error\": %.3g, \"shock_radius_exact\": %.4f, \"stepping\": \"%s\", "
-                "\"particle_steps\": %.6g}\n",
+                "\"particle_steps\": %.6g, \"peak_density_ratio\": %.4f, "
+                "\"centre_pressure_ratio\": %.3f}\n",
                 r.N, r.steps, r.meanNeighbours, r.wall, r.threads, updates, updates / r.threads, r.l1,
-                r.energyError, r.shockRadius, c.stepping.c_str(), r.particleSteps);
+                r.energyError, r.shockRadius, c.stepping.c_str(), r.particleSteps,
+                r.peakDensityRatio, r.centrePressureRatio);
   } else {
     std::printf("3D Sedov (SPH-EXA standard problem), kernel %s, eta %.3g\n", c.kernel.c_str(), c.eta);
     std::printf("  N                          %zu\n", r.N);
@@ -273,6 +284,8 @@ int main(int argc, char** argv) {
     std::printf("  wall time                  %.2f s\n", r.wall);
     std::printf("  particle-updates/s         %.4g  (%.4g per core)\n", updates, updates / r.threads);
     std::printf("  L1 density error           %.4f\n", r.l1);
+    std::printf("  peak density / jump        %.3f\n", r.peakDensityRatio);
+    std::printf("  centre pressure / exact    %.2f  (median of the 32 innermost)\n", r.centrePressureRatio);
     std::printf("  energy error               %.3g\n", r.energyError);
   }
   return 0;

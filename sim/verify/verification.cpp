@@ -16,6 +16,7 @@
 #include "sim/setup/bodies.hpp"
 #include "sim/setup/embedded_scenes.hpp"
 #include "sim/solid/materials.hpp"
+#include "sim/verify/blast_metrics.hpp"
 #include "sim/verify/runner.hpp"
 
 namespace ejecta::verify {
@@ -279,39 +280,8 @@ Report plateImpact(const Options& options) {
 
 // --- Sedov-Taylor blast -------------------------------------------------------------------------
 
-// Geometry j of the similarity solution and distance from the blast centre.
+// Geometry j of the similarity solution.
 int sedovSymmetry(Geometry g) { return g == Geometry::Planar ? 2 : (g == Geometry::Line ? 1 : 3); }
-
-double blastDistance(const ParticleSet& p, std::size_t i, const std::array<double, 3>& c, int dim) {
-  double r2 = 0.0;
-  for (int d = 0; d < dim; ++d) {
-    const double dx = p.x[d][i] - c[d];
-    r2 += dx * dx;
-  }
-  return std::sqrt(r2);
-}
-
-// The shock: the centre of the radial bin (width `binWidth`, out to `rMax`) with the highest
-// mass-weighted mean density, and that density.
-struct BlastShock {
-  double radius = 0.0;
-  double density = 0.0;
-};
-BlastShock blastShock(const ParticleSet& p, const std::array<double, 3>& centre, int dim,
-                      double binWidth, double rMax) {
-  const int bins = static_cast<int>(rMax / binWidth) + 1;
-  std::vector<double> binRho(bins, 0.0), binMass(bins, 0.0);
-  for (std::size_t i = 0; i < p.numReal; ++i) {
-    const int b = static_cast<int>(blastDistance(p, i, centre, dim) / binWidth);
-    if (b < bins) { binRho[b] += p.mass[i] * p.rho[i]; binMass[b] += p.mass[i]; }
-  }
-  int peak = 0;
-  for (int b = 0; b < bins; ++b) {
-    if (binMass[b] > 0) binRho[b] /= binMass[b];
-    if (binRho[b] > binRho[peak]) peak = b;
-  }
-  return {(peak + 0.5) * binWidth, binRho[peak]};
-}
 
 // Samples the shock radius of every run at kHistorySamples times spread over the run (the first
 // step at or after each), for the radius-against-time record of `ejecta verify --out`.
@@ -363,6 +333,8 @@ Report sedov(const std::string& name, const Options& options, int defaultLevels,
         {"shock_radius_exact", Rs, "m"},
         {"shock_radius_error", (shock.radius - Rs) / Rs, "1"},
         {"peak_density_ratio", shock.density / sedovExact.postShockDensity(), "1"},
+        {"centre_pressure_ratio",
+         centrePressureRatio(p, deposit.center, dim, sedovExact, f.time), "1"},
     };
     if (scene.geometry == Geometry::Axisymmetric) {
       // The axis of RZ: the largest particle pressure in the shell behind the shock (0.5 to 1.05

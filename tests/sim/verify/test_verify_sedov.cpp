@@ -13,8 +13,15 @@ namespace {
 // these resolutions 2h is 2-4% of the shock radius, so |error| < radiusTolerance is the
 // resolution-limited bound. The peak density of a shell a few h thick is under-resolved: SPH
 // reaches 60-80% of the exact jump (rho (gamma+1)/(gamma-1)) at ~100 particles across R.
-void expectSedov(const Report& r, double radiusTolerance, double minPeak, double maxL1) {
+//
+// The hot centre (issue 19): the median pressure of the 32 innermost particles over the exact,
+// within [minCentre, maxCentre] at the finest resolution (each problem's measured value and reason
+// at its call).
+void expectSedov(const Report& r, double radiusTolerance, double minPeak, double maxL1,
+                 double minCentre, double maxCentre) {
   const ResolutionRun& fine = r.runs.back();
+  EXPECT_GT(fine.metric("centre_pressure_ratio"), minCentre);
+  EXPECT_LT(fine.metric("centre_pressure_ratio"), maxCentre);
   EXPECT_LT(std::abs(fine.metric("shock_radius_error")), radiusTolerance);
   EXPECT_GT(fine.metric("peak_density_ratio"), minPeak);
   EXPECT_LT(fine.metric("L1_density"), maxL1);
@@ -31,10 +38,16 @@ void expectSedov(const Report& r, double radiusTolerance, double minPeak, double
   }
 }
 
-TEST(VerifySedov, Planar2D) { expectSedov(runProblem("sedov_2d", Options{}), 0.03, 0.65, 0.35); }
+// Centre pressure measured 0.82 and 1.55 of exact at 11k and 46k particles (the walls heated at
+// the start sit among the innermost 32 at the finer level); below the issue's 2x, with the
+// lower bound for a centre that loses its pressure.
+TEST(VerifySedov, Planar2D) {
+  expectSedov(runProblem("sedov_2d", Options{}), 0.03, 0.65, 0.35, 0.5, 2.0);
+}
 TEST(VerifySedov, AxisymmetricRZTheSeedsCase) {
   const Report r = runProblem("sedov_rz", Options{});
-  expectSedov(r, 0.03, 0.65, 0.3);
+  // Centre pressure: the scene's conductivity holds it at 1.10 and 0.97 of exact (0.1, 0.05 m).
+  expectSedov(r, 0.03, 0.65, 0.3, 0.6, 1.5);
   // The axis behind the shock (docs/rz.md): the rings within two spacings of it peak no higher
   // than 1.3x the jump and than 1.3x the rings away from it, at 0.1 and at 0.05 m. Without the
   // scene's artificial conductivity their peak grows with refinement (measured 1.72x and 3.71x
@@ -52,7 +65,10 @@ TEST(VerifySedov, Spherical3D) {
   // 36 particles across the box puts the shock only R/dx = 12.6 spacings from the centre (70-80 in
   // the 2D and RZ problems), and the exact shell behind it (~R/12 thick) is thinner than one
   // spacing: the resolved peak is 40% of the jump (measured 0.40); 0.35 bounds it.
-  expectSedov(runProblem("sedov_3d", Options{}), 0.05, 0.35, 0.3);
+  // The centre is 4.2x exact (the deposit's ~33 particles keep their heat: issue 19's "~4x";
+  // artificial conductivity alpha_u = 1 brings it to 1.59 at 9% more L1, docs/verification.md;
+  // the SPH-EXA problem at 125k reads 1.48 by default). 6 is a regression bound, not a goal.
+  expectSedov(runProblem("sedov_3d", Options{}), 0.05, 0.35, 0.3, 1.0, 6.0);
 }
 
 // 1D (j = 1), the deposit two spacings wide at every level: four resolutions, 0.02 to 0.0025 m
@@ -64,7 +80,9 @@ TEST(VerifySedov, Plane1DConvergesMonotonicallyWithTheDepositScaledToTheSpacing)
   o.resolutions = 4;
   const Report r = runProblem("sedov_1d", o);
   ASSERT_EQ(r.runs.size(), 4u);
-  expectSedov(r, 0.02, 0.9, 0.12);
+  // Centre pressure 0.999 and 0.988 of exact at the two finest levels: 1D has no hot centre to
+  // speak of at this deposit width; 15% either way is far beyond what the finest levels vary.
+  expectSedov(r, 0.02, 0.9, 0.12, 0.85, 1.15);
   for (std::size_t k = 1; k < r.runs.size(); ++k)
     EXPECT_LT(r.runs[k].metric("L1_density"), r.runs[k - 1].metric("L1_density")) << k;
   ASSERT_EQ(r.orders.size(), 3u);
