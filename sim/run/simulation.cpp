@@ -492,7 +492,8 @@ void Simulation::computeNextTimestep() {
   double dtForce = std::numeric_limits<double>::max();
   for (std::size_t i = 0; i < p_.numReal; ++i) {
     if (!isolated(i))
-      dtCourant = std::min(dtCourant, courantTimestep(sph, p_.h[i], p_.cs[i], p_.divv[i]));
+      dtCourant = std::min(dtCourant, courantTimestep(sph, p_.h[i], p_.cs[i], p_.divv[i],
+                                                      closingSpeedOf(i)));
     double a2 = 0.0;
     for (int d = 0; d < 3; ++d) a2 += p_.a[d][i] * p_.a[d][i];
     dtForce = std::min(dtForce, forceTimestep(sph, p_.h[i], a2));

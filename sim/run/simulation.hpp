@@ -186,6 +186,8 @@ class Simulation {
   // Each listed particle's own step limit (the hydrodynamic criteria and the packages' votes)
   // into the bins' dt_own; returns the smallest over every rank.
   double ownTimesteps(const std::vector<std::size_t>& which);
+  // The fastest closing speed of i's pairs with [time] closing_speed, else 0.
+  double closingSpeedOf(std::size_t i) const;
   // After the listed particles' steps ended: their new bins (the limiter's floor from their
   // neighbours) and the wake-up of neighbours on too long a step.
   void rebin(const std::vector<std::size_t>& ended);

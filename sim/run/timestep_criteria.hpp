@@ -3,6 +3,7 @@
 // over all particles) and individual steps (each particle's own).
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 
 #include "sim/sph/sph_options.hpp"
@@ -11,10 +12,33 @@ namespace ejecta {
 
 // Seed eq. (1.8), with |div v| (the printed h div v can be negative) and the denominator floored
 // at c so that alpha = 0 still respects the sound-crossing limit. Infinity when nothing limits.
-inline double courantTimestep(const SphOptions& sph, double h, double c, double divv) {
-  const double div = std::abs(divv);
-  const double denom = h * div + std::max(1.2 * (sph.alpha * c + sph.beta * h * div), c);
+// h |div v| stands for the speed at which the neighbours close in; `approach`, where given, is
+// that speed measured pair by pair (closingSpeed below), and the larger of the two is used: at a
+// one-sided contact (a lone particle reaching a body) the kernel sum dilutes div v while a
+// neighbour closes at the full impact speed.
+inline double courantTimestep(const SphOptions& sph, double h, double c, double divv,
+                              double approach = 0.0) {
+  const double closing = std::max(h * std::abs(divv), approach);
+  const double denom = closing + std::max(1.2 * (sph.alpha * c + sph.beta * closing), c);
   return denom > 0.0 ? sph.courant * h / denom : std::numeric_limits<double>::infinity();
+}
+
+// The fastest closing speed of a pair: max over j of -(v_i - v_j) . (x_i - x_j) / |x_i - x_j|,
+// 0 when no neighbour approaches (the approach part of Monaghan's (1997) signal velocity).
+// `pairs`: i's partners; positions and velocities in the particle set's columns.
+template <class Pairs, class Columns>
+double closingSpeed(std::size_t i, const Pairs& pairs, const Columns& x, const Columns& v, int dim) {
+  double fastest = 0.0;
+  for (const auto j : pairs) {
+    double r2 = 0.0, vdotx = 0.0;
+    for (int d = 0; d < dim; ++d) {
+      const double dx = x[d][i] - x[d][j];
+      r2 += dx * dx;
+      vdotx += (v[d][i] - v[d][j]) * dx;
+    }
+    if (vdotx < 0.0 && r2 > 0.0) fastest = std::max(fastest, -vdotx / std::sqrt(r2));
+  }
+  return fastest;
 }
 
 // The force criterion f sqrt(h / |a|) (Monaghan 1992), `a2` = |a|^2. Infinity for a = 0.

@@ -197,6 +197,7 @@ void readTime(const TableReader& root, TimeOptions& time) {
             "must be a power of two from 2 to 1024, or 0 (no limiter), not " + std::to_string(f));
     time.limiterFactor = static_cast<int>(f);
   }
+  time.closingSpeed = r.optBool("closing_speed").value_or(time.closingSpeed);
 }
 
 // The most snapshots a run may ask for: 100,000 (at 1e6 particles, ~100 MB each, 10 TB).

@@ -140,7 +140,10 @@ std::vector<SceneTable> runTables() {
                "(docs/time_steps.md)"),
         integer("limiter_factor", "2",
                 "individual steps: most a step may exceed a neighbour's, a power of two; 0 = "
-                "no limiter")}},
+                "no limiter"),
+        boolean("closing_speed", "false",
+                "the Courant step takes the fastest closing pair where it exceeds h |div v| "
+                "(bodies that meet; docs/time_steps.md)")}},
       {"output",
        "`[output]`",
        "",

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <string>
+#include <vector>
 #include <unistd.h>
 
 #include "fields/run_outputs.hpp"
@@ -19,12 +21,14 @@ namespace fs = std::filesystem;
 namespace ejecta::fields {
 namespace {
 
-RunSummary runImpact(const std::string& stepping, const std::string& file = "impact_rz.toml") {
+RunSummary runImpact(const std::string& stepping, const std::string& file = "impact_rz.toml",
+                     const std::vector<std::string>& extra = {}) {
   const fs::path dir = fs::temp_directory_path() /
                        ("ejecta_impact_steps_" + stepping + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
-  const Scene scene = loadScene(std::string(EJECTA_SOURCE_DIR) + "/scenes/" + file,
-                                {"time.stepping=" + stepping});
+  std::vector<std::string> overrides = extra;
+  overrides.push_back("time.stepping=" + stepping);
+  const Scene scene = loadScene(std::string(EJECTA_SOURCE_DIR) + "/scenes/" + file, overrides);
   RunOptions options;
   options.outDir = dir.string();
   options.configure = [](const Scene& s, RunOptions& o) { addFieldOutputs(o, s); };
@@ -34,10 +38,14 @@ RunSummary runImpact(const std::string& stepping, const std::string& file = "imp
   return r.summary;
 }
 
+// Both runs with [time] closing_speed (docs/time_steps.md, "Bodies that meet"): the impactor's
+// first contact is a one-sided kernel closing at 10 km/s. Without it, measured: depth +0.55%,
+// apparent diameter -2.3%, volume -2.6%, rim height +13%, energy error 5.4e-3 (global 4.0e-4),
+// particle-steps 0.38 of global; outside issue 18's 2% for the crater.
 TEST(VerifyImpactTimeSteps, TheRzCraterAt3msIsTheGlobalStepsCrater) {
-  const RunSummary global = runImpact("global");
-  const RunSummary individual = runImpact("individual");
-  const double spacing = 0.25;  // [m], the scene's particle spacing
+  const std::vector<std::string> closing{"time.closing_speed=true"};
+  const RunSummary global = runImpact("global", "impact_rz.toml", closing);
+  const RunSummary individual = runImpact("individual", "impact_rz.toml", closing);
   std::printf("crater at 3 ms, global / individual: depth %.3f / %.3f m, apparent diameter "
               "%.3f / %.3f m, volume %.1f / %.1f m^3; particle-steps %.3g / %lld; wall %.1f / "
               "%.1f s; energy error %.2e / %.2e\n",
@@ -51,16 +59,16 @@ TEST(VerifyImpactTimeSteps, TheRzCraterAt3msIsTheGlobalStepsCrater) {
               individual.energy.relativeError);
   ASSERT_TRUE(individual.flag("crater_found"));
   // At this spacing the crater is far from converged (it moves by tens of percent when the
-  // spacing is halved, docs/impact.md): the time stepping must change it by much less, within
-  // one particle spacing in depth and diameter and 5% in volume. Measured: depth +0.04 m,
-  // apparent diameter -0.18 m, volume -2.6%.
-  EXPECT_NEAR(individual.number("crater_depth_m"), global.number("crater_depth_m"), spacing);
-  EXPECT_NEAR(individual.number("crater_apparent_diameter_m"),
-              global.number("crater_apparent_diameter_m"), spacing);
-  EXPECT_NEAR(individual.number("crater_volume_m3") / global.number("crater_volume_m3"), 1.0, 0.05);
-  // The contact at 10 km/s is where the steps differ most: measured energy error 5.4e-3 (global
-  // 4.0e-4); 1.5e-2 bounds it. Particle-steps measured 0.38 of the global run's; 0.5 bounds it.
-  EXPECT_LT(std::abs(individual.energy.relativeError), 1.5e-2);
+  // spacing is halved, docs/impact.md): the time stepping must change it by much less, issue
+  // 18's 2% in depth, diameter and volume. Measured: +0.03%, +0.25%, +0.06%.
+  EXPECT_NEAR(individual.number("crater_depth_m") / global.number("crater_depth_m"), 1.0, 0.02);
+  EXPECT_NEAR(individual.number("crater_apparent_diameter_m") /
+                  global.number("crater_apparent_diameter_m"), 1.0, 0.02);
+  EXPECT_NEAR(individual.number("crater_volume_m3") / global.number("crater_volume_m3"), 1.0, 0.02);
+  // Energy error measured 1.8e-4 (global 7.6e-6); 1e-3 bounds it. Particle-steps measured 0.34
+  // of the global run's (the global run takes 14% more steps with the criterion, the individual
+  // one as many particle-steps as without it); 0.5 bounds it.
+  EXPECT_LT(std::abs(individual.energy.relativeError), 1e-3);
   EXPECT_LT(static_cast<double>(individual.integer("particle_updates")),
             0.5 * static_cast<double>(global.particles) * static_cast<double>(global.steps));
 }

@@ -140,6 +140,7 @@ TEST(SceneKeyReference, DefaultsAreTheCodes) {
       {"time", "dt_max", time.dtMax},
       {"time", "dt_min", time.dtMin},
       {"time", "max_steps", static_cast<double>(time.maxSteps)},
+      {"time", "closing_speed", time.closingSpeed ? 1.0 : 0.0},
       {"output", "snapshot_interval", out.snapshotInterval},
       {"output", "snapshots", out.snapshots ? 1.0 : 0.0},
       {"fields", "voxel", fields.voxel},
