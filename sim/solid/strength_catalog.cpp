@@ -5,6 +5,7 @@
 
 #include "sim/solid/strength_library.hpp"
 #include "sim/solid/strength_models/collins.hpp"
+#include "sim/solid/strength_models/drucker_prager.hpp"
 #include "sim/solid/strength_models/elastic.hpp"
 #include "sim/solid/strength_models/johnson_cook.hpp"
 #include "sim/solid/strength_models/von_mises.hpp"
@@ -40,6 +41,7 @@ const std::vector<StrengthModelRow>& strengthCatalog() {
       vonMisesStrengthRow(),
       johnsonCookStrengthRow(),
       collinsStrengthRow(),
+      druckerPragerStrengthRow(),
   };
   return rows;
 }

@@ -31,7 +31,8 @@ struct StrengthModelRow {
   std::shared_ptr<const YieldSurface> (*make)(const ModelSpec& spec, const StrengthLibraryEntry* entry);
 };
 
-// The rows in the order of the key reference: elastic, von_mises, johnson_cook, collins.
+// The rows in the order of the key reference: elastic, von_mises, johnson_cook, collins,
+// drucker_prager.
 const std::vector<StrengthModelRow>& strengthCatalog();
 const StrengthModelRow* findStrengthModel(const std::vector<StrengthModelRow>& rows, std::string_view name);
 

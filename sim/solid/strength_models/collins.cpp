@@ -31,9 +31,11 @@ StrengthModelRow collinsStrengthRow() {
   const Dimension kPa = Dimension::Pressure;
   return {"collins",
           "pressure-dependent rock, Collins et al. (2004): intact Lundborg curve, damaged Coulomb line",
-          {quantity("cohesion", kPa, "required for collins", "intact cohesion Y_0"),
+          {quantity("cohesion", kPa, "required for collins, drucker_prager",
+                    "cohesion Y_0, the strength at zero pressure (collins: intact)"),
            number("friction_intact", "required for collins", "intact friction coefficient μ_i, > 0"),
-           quantity("strength_limit", kPa, "required for collins", "strength limit Y_M, > Y_0"),
+           quantity("strength_limit", kPa, "required for collins, drucker_prager",
+                    "strength limit Y_M at high pressure, > Y_0"),
            number("friction_damaged", "required for collins", "damaged friction coefficient μ_d"),
            quantity("cohesion_damaged", kPa, "0",
                     "damaged cohesion Y_d0: Y_d = Y_d0 + μ_d P (0, as in Collins et al.)")},

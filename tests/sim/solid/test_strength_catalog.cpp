@@ -52,10 +52,11 @@ std::string buildError(const ModelSpec& spec,
   return "no error";
 }
 
-TEST(StrengthCatalog, ListsTheFourModelsInKeyReferenceOrder) {
+TEST(StrengthCatalog, ListsTheFiveModelsInKeyReferenceOrder) {
   std::vector<std::string_view> names;
   for (const StrengthModelRow& r : strengthCatalog()) names.push_back(r.name);
-  EXPECT_EQ(names, (std::vector<std::string_view>{"elastic", "von_mises", "johnson_cook", "collins"}));
+  EXPECT_EQ(names, (std::vector<std::string_view>{"elastic", "von_mises", "johnson_cook", "collins",
+                                                  "drucker_prager"}));
 }
 
 TEST(StrengthCatalog, EveryRowBuildsFromItsRequiredKeys) {
@@ -68,7 +69,8 @@ TEST(StrengthCatalog, EveryRowBuildsFromItsRequiredKeys) {
     EXPECT_FALSE(std::isnan(flow)) << row.name;
     EXPECT_GT(flow, 0.0) << row.name;
     EXPECT_EQ(m.flowStress(0.0, 1.0, 1000.0, 1000.0, 1e8, 0.0), 0.0) << row.name;  // molten
-    EXPECT_EQ(m.yieldCarriesDamage(), row.name == "collins") << row.name;
+    EXPECT_EQ(m.yieldCarriesDamage(), row.name == "collins" || row.name == "drucker_prager")
+        << row.name;
     // Each required key is needed: without it the model is refused, naming the key.
     for (std::string_view key : row.required) {
       ModelSpec less = requiredOnly(row);
@@ -116,25 +118,27 @@ TEST(StrengthCatalog, RowsAreDocumentedAndReachTheSceneSchema) {
   const config::KeySpec* model = config::findKey(family.keys, "model");
   ASSERT_NE(model, nullptr);
   EXPECT_EQ(model->allowed,
-            (std::vector<std::string_view>{"elastic", "von_mises", "johnson_cook", "collins"}));
+            (std::vector<std::string_view>{"elastic", "von_mises", "johnson_cook", "collins",
+                                           "drucker_prager"}));
 }
 
 TEST(StrengthCatalog, AnUnknownModelIsRefusedWithTheListOfModels) {
-  const std::string e = buildError(strengthTable("drucker_prager", {{"shear_modulus", 25e9}}));
-  EXPECT_NE(e.find("strength.model \"drucker_prager\" is not a strength model"), std::string::npos) << e;
-  EXPECT_NE(e.find("\"elastic\", \"von_mises\", \"johnson_cook\", \"collins\""), std::string::npos) << e;
+  const std::string e = buildError(strengthTable("mohr_coulomb", {{"shear_modulus", 25e9}}));
+  EXPECT_NE(e.find("strength.model \"mohr_coulomb\" is not a strength model"), std::string::npos) << e;
+  EXPECT_NE(e.find("\"elastic\", \"von_mises\", \"johnson_cook\", \"collins\", \"drucker_prager\""),
+            std::string::npos) << e;
   // Through the material table (a spec built in code, not read from a scene, which checks the
   // name itself): the SceneError names the material. It used to fall back to Johnson-Cook.
   MaterialSpec spec;
   spec.name = "rock";
   spec.line = 7;
-  spec.strength = strengthTable("drucker_prager", {{"shear_modulus", 25e9}});
+  spec.strength = strengthTable("mohr_coulomb", {{"shear_modulus", 25e9}});
   try {
     MaterialTable::fromSpecs({spec}, "scene.toml");
     ADD_FAILURE() << "an unknown strength model was accepted";
   } catch (const SceneError& err) {
     const std::string what = err.what();
-    EXPECT_NE(what.find("scene.toml:7: material 'rock': strength.model \"drucker_prager\""),
+    EXPECT_NE(what.find("scene.toml:7: material 'rock': strength.model \"mohr_coulomb\""),
               std::string::npos) << what;
   }
 }
