@@ -461,6 +461,7 @@ void Simulation::evaluateDerivatives(const std::vector<std::size_t>* active) {
   }
   const PackageContext context = packageContext(active ? &activeMask_ : nullptr);
   for (const auto& package : packages_) package->evaluateDerivatives(p_, context);
+  measureClosingSpeeds(active);
 }
 
 void Simulation::refuseUnbuiltGradients() const {

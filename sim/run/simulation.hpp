@@ -186,7 +186,10 @@ class Simulation {
   // Each listed particle's own step limit (the hydrodynamic criteria and the packages' votes)
   // into the bins' dt_own; returns the smallest over every rank.
   double ownTimesteps(const std::vector<std::size_t>& which);
-  // The fastest closing speed of i's pairs with [time] closing_speed, else 0.
+  // [time] closing_speed: the fastest closing speed of each evaluated particle's pairs, measured
+  // at the end of evaluateDerivatives (closing_), and read by the time-step criteria (0 without
+  // the key).
+  void measureClosingSpeeds(const std::vector<std::size_t>* active);
   double closingSpeedOf(std::size_t i) const;
   // After the listed particles' steps ended: their new bins (the limiter's floor from their
   // neighbours) and the wake-up of neighbours on too long a step.
@@ -222,6 +225,7 @@ class Simulation {
   Leapfrog leapfrog_;  // and its half-step state
   std::optional<TimeBins> bins_;  // individual time steps; empty: global steps
   ParticleMask activeMask_;       // the particles of the present sub-step
+  std::vector<double> closing_;   // measureClosingSpeeds' values [m/s], per real particle
   std::vector<std::shared_ptr<PhysicsPackage>> packages_;
   std::shared_ptr<FracturePackage> fracture_;  // also in packages_; owns the flaws
   std::vector<DepositFiring> firings_;

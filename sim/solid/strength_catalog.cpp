@@ -35,6 +35,17 @@ bool libraryHasModel(std::string_view model) {
 
 }  // namespace
 
+config::KeySpec cohesionKey() {
+  return config::keys::quantity("cohesion", Dimension::Pressure, "required for collins, drucker_prager",
+                                "cohesion Y_0, the strength at zero pressure (collins: intact)");
+}
+
+config::KeySpec strengthLimitKey() {
+  return config::keys::quantity("strength_limit", Dimension::Pressure,
+                                "required for collins, drucker_prager",
+                                "strength limit Y_M at high pressure, > Y_0");
+}
+
 const std::vector<StrengthModelRow>& strengthCatalog() {
   static const std::vector<StrengthModelRow> rows = {
       elasticStrengthRow(),

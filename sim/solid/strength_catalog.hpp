@@ -31,6 +31,11 @@ struct StrengthModelRow {
   std::shared_ptr<const YieldSurface> (*make)(const ModelSpec& spec, const StrengthLibraryEntry* entry);
 };
 
+// The keys two rows share (collins and drucker_prager), declared once so that the key reference
+// (which lists a shared key once) and both rows read the same spec.
+config::KeySpec cohesionKey();
+config::KeySpec strengthLimitKey();
+
 // The rows in the order of the key reference: elastic, von_mises, johnson_cook, collins,
 // drucker_prager.
 const std::vector<StrengthModelRow>& strengthCatalog();

@@ -22,8 +22,9 @@ constexpr double kTolerance = 1e-9;
 
 std::shared_ptr<const Communicator> world() { return worldCommunicator(); }
 
-// Runs `scene` on one rank and on every rank, and compares them.
-void expectSameAsOneRank(const Scene& scene) {
+// Runs `scene` on one rank and on every rank, and compares them; returns the ranks' run (its
+// particles gathered on rank 0).
+RankedRun expectSameAsOneRank(const Scene& scene) {
   const RankedRun one = runOn(scene, std::make_shared<SerialCommunicator>());
   const RankedRun many = runOn(scene, world());
   // Every rank took part: it held particles and borrowed a halo.
@@ -31,13 +32,14 @@ void expectSameAsOneRank(const Scene& scene) {
   const std::uint64_t migrated = world()->sum(many.stats.migrated);
   EXPECT_EQ(one.steps, many.steps) << scene.name;
   EXPECT_NEAR(one.totals.total(), many.totals.total(), 1e-12 * std::abs(one.totals.total()));
-  if (!world()->isRoot()) return;
+  if (!world()->isRoot()) return many;
   const FieldDifference d = compareParticles(one.particles, many.particles);
   EXPECT_LE(d.relative, kTolerance) << scene.name << ": field " << d.field;
   std::printf("[ ranks %d ] %s: %ld steps, %zu particles (%zu moved rank, %ld decompositions), "
               "worst field %s differs by %.2e of its largest value\n", world()->size(),
               scene.name.c_str(), many.steps, many.particles.numReal, static_cast<std::size_t>(migrated),
               many.stats.rebalances, d.field.c_str(), d.relative);
+  return many;
 }
 
 TEST(MpiRuns, Sod1dWithWalls) { expectSameAsOneRank(sceneFile("verification/sod_1d.toml", {})); }
@@ -122,6 +124,74 @@ TEST(MpiRuns, IndividualTimeStepsAcrossADelayedDeposit) {
                                 {"bodies[0].spacing=0.025", "energy_deposits[0].width=0.1",
                                  "energy_deposits[0].time=0.004 s", "time.t_end=0.02 s",
                                  "time.stepping=individual"}));
+}
+
+// Issue 18's closing-speed criterion on ranks, with global and individual steps: it reads the
+// halos' positions and velocities as the force pass saw them.
+TEST(MpiRuns, ImpactRzWithTheClosingSpeed) {
+  for (const char* stepping : {"global", "individual"})
+    expectSameAsOneRank(sceneFile(
+        "impact_rz.toml", {"bodies[0].spacing=0.5 m", "bodies[1].spacing=1.5 m",
+                           "bodies[2].spacing=1.5 m", "time.t_end=0.6 ms",
+                           "time.closing_speed=true", std::string("time.stepping=") + stepping}));
+}
+
+// Issue 23's smoothing-length cap on ranks: a per-particle field that migrates with its particle.
+// The lone fragment of tests/sim/run/test_stability_rarefied.cpp (a 40 x 40 block, one particle
+// leaving it at 3 km/s under continuity density, h_max_factor 1): in flight at 50 us it is held
+// at its cap, on whichever rank holds it; with global and individual steps.
+TEST(MpiRuns, ALeavingParticleHeldAtItsSmoothingLengthCap) {
+  const std::string block = R"(
+material = "granite"
+shape = "box"
+spacing = "1 cm"
+density = "2680 kg/m^3"
+pressure = 0.0
+)";
+  for (const char* stepping : {"global", "individual"}) {
+    const std::string toml = R"(
+[scene]
+name = "capped_fragment"
+dimension = "2d"
+[sph]
+form = "interface"
+density = "continuity"
+h_max_factor = 1
+[time]
+t_end = "50 us"
+stepping = ")" + std::string(stepping) + R"("
+[output]
+snapshots = false
+[[materials]]
+name = "granite"
+eos = "tillotson"
+library = "granite"
+parameters = { minimum_pressure = 0.0 }
+[[bodies]]
+name = "block"
+min = [0.0, 0.0]
+max = ["0.4 m", "0.4 m"]
+)" + block + R"(
+[[bodies]]
+name = "fragment"
+min = ["0.40 m", "0.19 m"]
+max = ["0.41 m", "0.20 m"]
+velocity = ["3 km/s", 0.0]
+)" + block;
+    const RankedRun many = expectSameAsOneRank(parseScene(toml, "capped_fragment.toml"));
+    if (!world()->isRoot()) continue;
+    const ParticleSet& p = many.particles;
+    const Field* cap = p.field("smoothing_length_cap");
+    ASSERT_NE(cap, nullptr);
+    std::size_t fragment = p.numReal;
+    for (std::size_t i = 0; i < p.numReal; ++i)
+      if (p.x[0][i] > 0.5) fragment = i;  // 0.405 m + 3 km/s x 50 us = 0.555 m
+    ASSERT_LT(fragment, p.numReal) << stepping;
+    const double capped = p.column(*cap, 0)[fragment];
+    // The continuity cap is held to 1e-3 (tests/sim/run/test_stability_rarefied.cpp).
+    EXPECT_NEAR(capped, 1.2 * 0.01, 1e-12);
+    EXPECT_NEAR(p.h[fragment], capped, 1e-3 * capped) << stepping;
+  }
 }
 
 }  // namespace

@@ -31,11 +31,9 @@ StrengthModelRow collinsStrengthRow() {
   const Dimension kPa = Dimension::Pressure;
   return {"collins",
           "pressure-dependent rock, Collins et al. (2004): intact Lundborg curve, damaged Coulomb line",
-          {quantity("cohesion", kPa, "required for collins, drucker_prager",
-                    "cohesion Y_0, the strength at zero pressure (collins: intact)"),
+          {cohesionKey(),
            number("friction_intact", "required for collins", "intact friction coefficient μ_i, > 0"),
-           quantity("strength_limit", kPa, "required for collins, drucker_prager",
-                    "strength limit Y_M at high pressure, > Y_0"),
+           strengthLimitKey(),
            number("friction_damaged", "required for collins", "damaged friction coefficient μ_d"),
            quantity("cohesion_damaged", kPa, "0",
                     "damaged cohesion Y_d0: Y_d = Y_d0 + μ_d P (0, as in Collins et al.)")},

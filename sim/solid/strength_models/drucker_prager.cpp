@@ -18,11 +18,9 @@ StrengthModelRow druckerPragerStrengthRow() {
   using namespace config::keys;
   return {"drucker_prager",
           "frictional (granular, damaged) material: Y = min(Y_0 + μ P, Y_M), damage does not weaken it",
-          {quantity("cohesion", Dimension::Pressure, "required for collins, drucker_prager",
-                    "cohesion Y_0, the strength at zero pressure (collins: intact)"),
+          {cohesionKey(),
            number("friction", "required for drucker_prager", "friction coefficient μ = dY/dP, > 0"),
-           quantity("strength_limit", Dimension::Pressure, "required for collins, drucker_prager",
-                    "strength limit Y_M at high pressure, > Y_0")},
+           strengthLimitKey()},
           {"cohesion", "friction", "strength_limit"},
           [](const ModelSpec& s, const StrengthLibraryEntry*) -> std::shared_ptr<const YieldSurface> {
             DruckerPragerParameters c;

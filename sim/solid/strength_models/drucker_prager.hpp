@@ -7,7 +7,8 @@
 // with I1' = 3P the first invariant in compression. With ejecta's yield stress Y = sqrt(3 J2)
 // (the von Mises radial return, sim/solid/strength.hpp) that is Y = Y_0 + mu P with
 // Y_0 = sqrt(3) k and mu = 3 sqrt(3) alpha: the cohesion and friction coefficient given here are
-// those two, the form iSALE's and miluphcuda's Drucker-Prager options take. The cap Y_M is the
+// those two, the form iSALE's Drucker-Prager option takes (miluphcuda's takes a Mohr-Coulomb c
+// and phi and converts them: docs/materials.md). The cap Y_M is the
 // von Mises limit the same rock reaches at high pressure (as Y_M of Collins et al. 2004). In
 // tension (P < 0) the line continues to zero at P = -Y_0 / mu, never negative.
 //

@@ -38,9 +38,8 @@ void expectSedov(const Report& r, double radiusTolerance, double minPeak, double
   }
 }
 
-// Centre pressure measured 0.82 and 1.55 of exact at 11k and 46k particles (the walls heated at
-// the start sit among the innermost 32 at the finer level); below the 2x, with the
-// lower bound for a centre that loses its pressure.
+// Centre pressure measured 0.82 and 1.55 of exact at 11k and 46k particles; below the issue's
+// 2x, with the lower bound for a centre that loses its pressure.
 TEST(VerifySedov, Planar2D) {
   expectSedov(runProblem("sedov_2d", Options{}), 0.03, 0.65, 0.35, 0.5, 2.0);
 }
