@@ -17,9 +17,9 @@
 // --chart: the accuracy-for-cost chart of issue 19: the kernel gradient (the default), with
 // Balsara's switch, with the monotone reconstructed viscosity and with integral-approach
 // gradients, each at n = 30, 40 and 50, into DIR/sedov_3d_<variant>.csv (n, N, wall_s,
-// particle_updates, L1_density) and DIR/sedov_3d_error_vs_cost.png (L1 against wall time, one
-// line per variant, the peers' published L1 at N = 125,000 as dashed lines). About 3 minutes
-// on 2 cores.
+// particle_updates, L1_density, peak_density_ratio, centre_pressure_ratio) and
+// DIR/sedov_3d_error_vs_cost.png (L1 against wall time, one line per variant, the peers'
+// published L1 at N = 125,000 as dashed lines). About 3 minutes on 2 cores.
 #include <array>
 #include <chrono>
 #include <filesystem>
@@ -188,13 +188,14 @@ int chart(const std::filesystem::path& dir, int threads) {
     const std::filesystem::path partial = dir / ("sedov_3d_" + v.name + ".csv.part");
     {
       std::ofstream out(partial);
-      out << "n,N,wall_s,particle_updates,L1_density\n";
+      out << "n,N,wall_s,particle_updates,L1_density,peak_density_ratio,centre_pressure_ratio\n";
       for (int n : {30, 40, 50}) {
         const Result r = runSedov(scene, n, threads);
         std::printf("%-34s n %d: L1 %.4f, %.1f s (%d threads)\n", v.label.c_str(), n, r.l1, r.wall,
                     r.threads);
         std::fflush(stdout);
-        out << n << "," << r.N << "," << r.wall << "," << r.particleSteps << "," << r.l1 << "\n";
+        out << n << "," << r.N << "," << r.wall << "," << r.particleSteps << "," << r.l1 << ","
+            << r.peakDensityRatio << "," << r.centrePressureRatio << "\n";
       }
     }
     std::filesystem::rename(partial, csv);
