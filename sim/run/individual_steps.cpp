@@ -38,7 +38,8 @@ void Simulation::measureClosingSpeeds(const std::vector<std::size_t>* active) {
 }
 
 double Simulation::closingSpeedOf(std::size_t i) const {
-  return scene_.time.closingSpeed ? closing_[i] : 0.0;
+  // Every caller follows an evaluation of i; the bound only guards a path that does not.
+  return scene_.time.closingSpeed && i < closing_.size() ? closing_[i] : 0.0;
 }
 
 double Simulation::ownTimesteps(const std::vector<std::size_t>& which) {
