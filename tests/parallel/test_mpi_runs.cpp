@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "parallel/mpi_support.hpp"
+#include "support/lone_fragment.hpp"
 #include "support/periodic_blast.hpp"
 
 namespace ejecta::test {
@@ -137,47 +138,14 @@ TEST(MpiRuns, ImpactRzWithTheClosingSpeed) {
 }
 
 // Issue 23's smoothing-length cap on ranks: a per-particle field that migrates with its particle.
-// The lone fragment of tests/sim/run/test_stability_rarefied.cpp (a 40 x 40 block, one particle
-// leaving it at 3 km/s under continuity density, h_max_factor 1): in flight at 50 us it is held
-// at its cap, on whichever rank holds it; with global and individual steps.
+// The lone fragment of tests/support/lone_fragment.hpp (a 40 x 40 block, one particle leaving it
+// at 3 km/s under continuity density), with h_max_factor 1: in flight at 50 us it is held at its
+// cap, on whichever rank holds it (as in tests/sim/run/test_stability_rarefied.cpp); with global
+// and individual steps.
 TEST(MpiRuns, ALeavingParticleHeldAtItsSmoothingLengthCap) {
-  const std::string block = R"(
-material = "granite"
-shape = "box"
-spacing = "1 cm"
-density = "2680 kg/m^3"
-pressure = 0.0
-)";
   for (const char* stepping : {"global", "individual"}) {
-    const std::string toml = R"(
-[scene]
-name = "capped_fragment"
-dimension = "2d"
-[sph]
-form = "interface"
-density = "continuity"
-h_max_factor = 1
-[time]
-t_end = "50 us"
-stepping = ")" + std::string(stepping) + R"("
-[output]
-snapshots = false
-[[materials]]
-name = "granite"
-eos = "tillotson"
-library = "granite"
-parameters = { minimum_pressure = 0.0 }
-[[bodies]]
-name = "block"
-min = [0.0, 0.0]
-max = ["0.4 m", "0.4 m"]
-)" + block + R"(
-[[bodies]]
-name = "fragment"
-min = ["0.40 m", "0.19 m"]
-max = ["0.41 m", "0.20 m"]
-velocity = ["3 km/s", 0.0]
-)" + block;
+    const std::string time = "t_end = \"50 us\"\nstepping = \"" + std::string(stepping) + "\"\n";
+    const std::string toml = loneFragmentScene("h_max_factor = 1\n", time, false);
     const RankedRun many = expectSameAsOneRank(parseScene(toml, "capped_fragment.toml"));
     if (!world()->isRoot()) continue;
     const ParticleSet& p = many.particles;

@@ -17,6 +17,7 @@
 #include "sim/setup/bodies.hpp"
 #include "sim/setup/scene.hpp"
 #include "sim/solid/materials.hpp"
+#include "support/lone_fragment.hpp"
 
 namespace ejecta {
 namespace {
@@ -56,50 +57,10 @@ struct Outcome {
   long steps = 0;
 };
 
-// A 40 x 40 block (1 cm, at rest), one particle leaving it at 3 km/s and a second 20 x 20 block
-// 0.2 m further on that the particle reaches at ~59 us (2D planar, continuity density, the
-// interface form, rubble with no tension); run to 100 us.
+// The lone fragment and the second block it reaches at ~59 us (tests/support/lone_fragment.hpp),
+// run to 100 us.
 Outcome run(const std::string& time) {
-  const std::string block = R"(
-material = "granite"
-shape = "box"
-spacing = "1 cm"
-density = "2680 kg/m^3"
-pressure = 0.0
-)";
-  const std::string toml = R"(
-[scene]
-name = "lone_fragment"
-dimension = "2d"
-[sph]
-form = "interface"
-density = "continuity"
-[time]
-t_end = "100 us"
-)" + time + R"(
-[output]
-snapshots = false
-[[materials]]
-name = "granite"
-eos = "tillotson"
-library = "granite"
-parameters = { minimum_pressure = 0.0 }
-[[bodies]]
-name = "block"
-min = [0.0, 0.0]
-max = ["0.4 m", "0.4 m"]
-)" + block + R"(
-[[bodies]]
-name = "fragment"
-min = ["0.40 m", "0.19 m"]
-max = ["0.41 m", "0.20 m"]
-velocity = ["3 km/s", 0.0]
-)" + block + R"(
-[[bodies]]
-name = "second_block"
-min = ["0.60 m", "0.10 m"]
-max = ["0.80 m", "0.30 m"]
-)" + block;
+  const std::string toml = test::loneFragmentScene("", "t_end = \"100 us\"\n" + time, true);
   const Scene scene = parseScene(toml, "lone_fragment.toml");
   MaterialTable materials = MaterialTable::fromScene(scene);
   ParticleSet initial = buildParticles(scene, materials);

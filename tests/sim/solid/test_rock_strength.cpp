@@ -171,22 +171,18 @@ TEST(RockStrength, MeltingDropsTheStressToZero) {
   for (int c = 0; c < 4; ++c) EXPECT_EQ(p.stress[c][0], 0.0);
 }
 
-// Uniaxial strain of fully damaged rock, integrated at one material point with the solver's own
-// pieces (Jaumann rate, P = K eps_v, applyPlasticity): compression along x at a constant rate.
-// Frictional rock yields at once here (2G eps > mu_d K eps) and then stays on Y = mu_d P, so
-// S = diag(s, -s/2, -s/2) with 3|s|/2 = mu_d P: sigma_xx = -P (1 + 2 mu_d / 3), sigma_yy =
-// -P (1 - mu_d / 3), a lateral-to-axial ratio (1 - mu_d/3) / (1 + 2 mu_d/3) = 0.8 / 1.4 and a
-// largest shear stress (sigma_yy - sigma_xx) / 2 = mu_d P / 2: not the zero of a fluid.
-TEST(RockStrength, UniaxialCompressionOfDamagedRockCarriesFrictionalShear) {
+// One material point of `materials` compressed along x at 1e3 /s for 2000 steps of 1 ns, to 0.2%
+// strain and P = K eps = 100 MPa (K = 50 GPa), with the solver's own pieces: the Jaumann rate
+// at shear modulus G, P = K eps_v, applyPlasticity after each step.
+ParticleSet compressUniaxially(const MaterialTable& materials, double crack) {
   const double K = 50e9, G = 25e9, rate = 1e3, dt = 1e-9;  // strain 1e-6 per step
   ParticleSet p = solidParticles(1);
-  p.crack[0] = 1.0;
+  p.crack[0] = crack;
   p.temperature[0] = 300.0;
-  const MaterialTable materials = collinsGranite();
   Mat3 L{};
   L[0][0] = -rate;
   double volumetric = 0.0;
-  for (int step = 0; step < 2000; ++step) {  // to 0.2% strain, P = 100 MPa
+  for (int step = 0; step < 2000; ++step) {
     SymTensor S;
     for (int c = 0; c < 4; ++c) S[c] = p.stress[c][0];
     const SymTensor dS = jaumannStressRate(L, S, G);
@@ -195,6 +191,17 @@ TEST(RockStrength, UniaxialCompressionOfDamagedRockCarriesFrictionalShear) {
     p.P[0] = K * volumetric;
     applyPlasticity(p, materials, true);
   }
+  return p;
+}
+
+// Uniaxial strain of fully damaged rock, integrated at one material point with the solver's own
+// pieces (Jaumann rate, P = K eps_v, applyPlasticity): compression along x at a constant rate.
+// Frictional rock yields at once here (2G eps > mu_d K eps) and then stays on Y = mu_d P, so
+// S = diag(s, -s/2, -s/2) with 3|s|/2 = mu_d P: sigma_xx = -P (1 + 2 mu_d / 3), sigma_yy =
+// -P (1 - mu_d / 3), a lateral-to-axial ratio (1 - mu_d/3) / (1 + 2 mu_d/3) = 0.8 / 1.4 and a
+// largest shear stress (sigma_yy - sigma_xx) / 2 = mu_d P / 2: not the zero of a fluid.
+TEST(RockStrength, UniaxialCompressionOfDamagedRockCarriesFrictionalShear) {
+  const ParticleSet p = compressUniaxially(collinsGranite(), 1.0);
   const SymTensor sigma = effectiveStress(p, 0, true);
   const double P = p.P[0], mu = 0.6;
   EXPECT_NEAR(P, 100e6, 1e-6 * 100e6);  // sum of 2000 equal increments: round-off
@@ -345,26 +352,11 @@ TEST(DruckerPrager, StraightLineFromTheCohesionToTheLimitAtHandComputedPoints) {
 // Drucker-Prager surface: on Y = Y_0 + mu P after the last return, sigma_xx = -P - 2Y/3 and
 // sigma_yy = -P + Y/3, exact but for round-off; intact (D = 0) it is the same material.
 TEST(DruckerPrager, UniaxialCompressionEndsOnTheLine) {
-  const double K = 50e9, G = 25e9, rate = 1e3, dt = 1e-9;
   Material m;
   m.name = "rubble";
   m.thermal = ThermalModel{800.0, 293.0, 1500.0};
-  m.strength = StrengthModel(G, std::make_shared<DruckerPragerYield>(rubble()));
-  const MaterialTable materials({m});
-  ParticleSet p = solidParticles(1);
-  p.temperature[0] = 300.0;
-  Mat3 L{};
-  L[0][0] = -rate;
-  double volumetric = 0.0;
-  for (int step = 0; step < 2000; ++step) {  // to 0.2% strain, P = 100 MPa
-    SymTensor S;
-    for (int c = 0; c < 4; ++c) S[c] = p.stress[c][0];
-    const SymTensor dS = jaumannStressRate(L, S, G);
-    for (int c = 0; c < 4; ++c) p.stress[c][0] += dt * dS[c];
-    volumetric += rate * dt;
-    p.P[0] = K * volumetric;
-    applyPlasticity(p, materials, true);
-  }
+  m.strength = StrengthModel(25e9, std::make_shared<DruckerPragerYield>(rubble()));
+  const ParticleSet p = compressUniaxially(MaterialTable({m}), 0.0);
   const SymTensor sigma = effectiveStress(p, 0, true);
   const double P = p.P[0], Y = 1e6 + 0.8 * P;
   EXPECT_NEAR(sigma[kXX], -P - 2.0 * Y / 3.0, 1e-10 * P);
