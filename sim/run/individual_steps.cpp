@@ -24,24 +24,6 @@ std::uint64_t Simulation::particleUpdates() const {
   return domain_.comm().sum(static_cast<std::size_t>(bins_ ? bins_->updates() : globalUpdates_));
 }
 
-void Simulation::measureClosingSpeeds(const std::vector<std::size_t>* active) {
-  // At the end of the evaluation, while every copy (ghost, halo) holds the state the force pass
-  // saw: after it the closing kick moves the real particles and not their copies elsewhere.
-  if (!scene_.time.closingSpeed) return;
-  closing_.resize(p_.numReal, 0.0);
-  const std::size_t n = active ? active->size() : p_.numReal;
-#pragma omp parallel for schedule(static)
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t i = active ? (*active)[k] : k;
-    closing_[i] = closingSpeed(i, ws_.lists.pairs(i), p_.x, p_.v, ws_.dim);
-  }
-}
-
-double Simulation::closingSpeedOf(std::size_t i) const {
-  // Every caller follows an evaluation of i; the bound only guards a path that does not.
-  return scene_.time.closingSpeed && i < closing_.size() ? closing_[i] : 0.0;
-}
-
 double Simulation::ownTimesteps(const std::vector<std::size_t>& which) {
   const SphOptions& sph = scene_.sph;
   std::vector<double> dt(which.size());
