@@ -1,11 +1,14 @@
 #pragma once
-// The exact compaction wave of a P-alpha material (sim/solid/porosity.hpp) driven by a piston:
+// The exact compaction wave of a P-alpha (sim/solid/porosity.hpp) or epsilon-alpha
+// (sim/solid/strain_porosity.hpp) material driven by a piston:
 // material at rest (bulk density rho_s0 / alpha_0, u = 0, P = 0) pushed by a face moving at
 // constant speed u_p. With Pe > 0 the wave splits in two (Herrmann 1969, J. Appl. Phys. 40,
 // 2490, "Hugoniots"; the test of Jutzi, Benz & Michel 2008, Icarus 198, 242):
-//   - an elastic precursor to P = Pe, alpha = alpha_e (the pores' elastic limit), and behind it
-//   - a compaction shock to the piston's velocity, ending on the crush curve: alpha = alpha(P)
-//     (partly compacted) or alpha = 1 (P >= Ps).
+//   - an elastic precursor to the pores' elastic limit (P-alpha: P = Pe; epsilon-alpha: the
+//     strain eps_e), alpha = alpha_e, and behind it
+//   - a compaction shock to the piston's velocity, ending on the loading curve: P-alpha's
+//     alpha = alpha(P), epsilon-alpha's alpha = alpha(eps) with eps the state's strain,
+//     ln(rho_0/rho) - Gamma_0/c_s0^2 u (a function of the state: sim/solid/strain_porosity.hpp).
 // Each front is a jump conserving mass, momentum and energy from the state ahead of it (a),
 //   rho_a (D - v_a) = rho_b (D - v_b),   P_b - P_a = rho_a (D - v_a)(v_b - v_a),
 //   u_b - u_a = (P_a + P_b)(1/rho_a - 1/rho_b) / 2,
@@ -17,6 +20,7 @@
 // to the same end state differ at second order in its strain (~Pe / K, 1e-3 here).
 #include "sim/eos/eos.hpp"
 #include "sim/solid/porosity.hpp"
+#include "sim/solid/strain_porosity.hpp"
 
 namespace ejecta::exact {
 
@@ -40,6 +44,8 @@ struct CompactionWave {
 // Throws std::domain_error for a piston too slow to compact (u_p at most the precursor's
 // particle velocity) and std::invalid_argument for a non-positive u_p.
 CompactionWave compactionWave(const EquationOfState& matrix, const PalphaModel& model,
+                              double pistonSpeed);
+CompactionWave compactionWave(const EquationOfState& matrix, const EpsilonAlphaModel& model,
                               double pistonSpeed);
 
 }  // namespace ejecta::exact

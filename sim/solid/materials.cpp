@@ -1,5 +1,6 @@
 #include "sim/solid/materials.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -7,6 +8,9 @@
 #include "core/input_error.hpp"
 #include "sim/eos/eos_catalog.hpp"
 #include "sim/solid/material_spec.hpp"
+#include "sim/solid/model_keys.hpp"
+#include "sim/solid/porosity.hpp"
+#include "sim/solid/strain_porosity.hpp"
 #include "sim/solid/strength_catalog.hpp"
 
 namespace ejecta {
@@ -123,17 +127,20 @@ FractureModel makeFracture(const MaterialSpec& spec, bool hasStrength) {
   return model;
 }
 
-// The porosity table's P-alpha model on the material's equation of state (its matrix).
-std::optional<PalphaModel> makePorosity(const MaterialSpec& spec, const EquationOfState& eos) {
-  const ModelSpec& t = spec.porosity;
-  if (!t.present) return std::nullopt;
-  PalphaParameters p;
+// The initial distention of a porosity table: from exactly one of porosity and
+// initial_distention.
+double initialDistentionOf(const ModelSpec& t) {
   const double* phi = t.find("porosity");
   const double* alpha0 = t.find("initial_distention");
   if ((phi != nullptr) == (alpha0 != nullptr))
     fail("porosity: give exactly one of porosity (phi_0) and initial_distention (alpha_0)");
   if (phi && !(*phi < 1.0)) fail("porosity.porosity must be below 1");
-  p.initialDistention = phi ? 1.0 / (1.0 - *phi) : *alpha0;
+  return phi ? 1.0 / (1.0 - *phi) : *alpha0;
+}
+
+PalphaModel makePalpha(const ModelSpec& t, const EquationOfState& eos) {
+  PalphaParameters p;
+  p.initialDistention = initialDistentionOf(t);
   if (!t.find("elastic_pressure") || !t.find("solid_pressure"))
     fail("porosity model \"p_alpha\" needs elastic_pressure and solid_pressure (its crush curve)");
   p.elasticPressure = *t.find("elastic_pressure");
@@ -148,6 +155,45 @@ std::optional<PalphaModel> makePorosity(const MaterialSpec& spec, const Equation
   p.maxChangePerStep = valueOr(t, "max_distention_change", p.maxChangePerStep);
   if (!(p.maxChangePerStep > 0.0)) fail("porosity.max_distention_change must be positive");
   return PalphaModel(p);
+}
+
+EpsilonAlphaModel makeEpsilonAlpha(const ModelSpec& t, const EquationOfState& eos) {
+  EpsilonAlphaParameters p;
+  p.initialDistention = initialDistentionOf(t);
+  if (!t.find("transition_distention") || !t.find("kappa"))
+    fail("porosity model \"epsilon_alpha\" needs transition_distention (alpha_x) and kappa");
+  // The scene gives the elastic strain's magnitude (compression is negative).
+  p.elasticStrain = -valueOr(t, "elastic_strain", 0.0);
+  p.transitionDistention = *t.find("transition_distention");
+  p.kappa = *t.find("kappa");
+  p.soundSpeedRatio = valueOr(t, "sound_speed_ratio", p.soundSpeedRatio);
+  p.thermalStrain = valueOr(t, "thermal_strain", 1.0) != 0.0;
+  p.solidDensity = valueOr(t, "solid_density", 0.0);
+  p.maxChangePerStep = valueOr(t, "max_distention_change", p.maxChangePerStep);
+  return EpsilonAlphaModel::onMatrix(p, eos);
+}
+
+// The porosity table's model on the material's equation of state (its matrix).
+std::shared_ptr<const PorosityModel> makePorosity(const MaterialSpec& spec,
+                                                  const EquationOfState& eos) {
+  const ModelSpec& t = spec.porosity;
+  if (!t.present) return nullptr;
+  // A key of the other model is a mistake worth naming (kappa under p_alpha, say).
+  const ModelFamily& family = porosityModelFamily();
+  for (const auto& [key, value] : t.values) {
+    std::string owners;
+    bool own = false;
+    for (const ModelKind& m : family.models) {
+      if (std::find(m.keys.begin(), m.keys.end(), key) == m.keys.end()) continue;
+      own = own || m.name == t.model;
+      owners += (owners.empty() ? "\"" : ", \"") + std::string(m.name) + "\"";
+    }
+    if (!own)
+      fail("porosity." + key + " does not apply to model \"" + t.model + "\"; it applies only to " +
+           owners);
+  }
+  if (t.model == "epsilon_alpha") return std::make_shared<EpsilonAlphaModel>(makeEpsilonAlpha(t, eos));
+  return std::make_shared<PalphaModel>(makePalpha(t, eos));
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 #include "sim/eos/eos.hpp"
 #include "sim/solid/fracture.hpp"
 #include "sim/solid/material_spec.hpp"
-#include "sim/solid/porosity.hpp"
+#include "sim/solid/porosity_model.hpp"
 #include "sim/solid/strength.hpp"
 #include "sim/solid/thermal.hpp"
 
@@ -24,7 +24,9 @@ struct Material {
   ThermalModel thermal;
   std::optional<StrengthModel> strength;
   FractureModel fracture;  // kind None: never fails
-  std::optional<PalphaModel> porosity;  // pores below the resolution (sim/solid/porosity.hpp)
+  // Pores below the resolution: P-alpha (sim/solid/porosity.hpp) or epsilon-alpha
+  // (sim/solid/strain_porosity.hpp); null where the material has none.
+  std::shared_ptr<const PorosityModel> porosity;
 };
 
 class MaterialTable {

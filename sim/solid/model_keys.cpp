@@ -117,6 +117,12 @@ const ModelFamily& porosityModelFamily() {
                     {"porosity", "initial_distention", "elastic_pressure", "solid_pressure",
                      "crush_exponent", "transition_pressure", "transition_distention",
                      "transition_exponent", "solid_density", "porous_sound_speed",
+                     "max_distention_change"}},
+                   {"epsilon_alpha",
+                    "epsilon-alpha (Wünnemann, Collins & Melosh 2006; Collins, Melosh & "
+                    "Wünnemann 2011): the distention falls with the volumetric strain",
+                    {"porosity", "initial_distention", "elastic_strain", "transition_distention",
+                     "kappa", "sound_speed_ratio", "thermal_strain", "solid_density",
                      "max_distention_change"}}},
                   {}};
     f.keys = {
@@ -131,12 +137,25 @@ const ModelFamily& porosityModelFamily() {
         number("crush_exponent", "2", "n of the crush curve α = 1 + (αe − 1)((Ps − P)/(Ps − Pe))^n"),
         quantity("transition_pressure", Dimension::Pressure, "solid_pressure",
                  "Pt of the two-segment curve (docs/porosity.md)"),
-        number("transition_distention", "αe (one segment)", "αt of the two-segment curve, in [1, αe]"),
+        number("transition_distention", "αe (one segment); required (epsilon_alpha)",
+               "p_alpha: αt of the two-segment curve, in [1, αe]; epsilon_alpha: αx, where the "
+               "exponential gives way to the power law, in [1, αe]"),
         number("transition_exponent", "2", "n1 of the two-segment curve's first segment"),
+        number("elastic_strain", "0",
+               "epsilon_alpha: |εe|, the volumetric strain's magnitude where plastic compaction "
+               "begins (iSALE's EPSE is −εe)"),
+        number("kappa", "required", "epsilon_alpha: κ in (0, 1), the exponential's rate "
+               "α = αe exp(κ (ε − εe))"),
+        number("sound_speed_ratio", "1",
+               "epsilon_alpha: χ = c0/cs0 in (0, 1], the porous to the matrix's sound speed at "
+               "α0 (iSALE's CHI; 1: no elastic compaction)"),
+        boolean("thermal_strain", "true",
+                "epsilon_alpha: leave the matrix's thermal expansion Γ0/cs0² du out of the "
+                "strain that compacts (iSALE, Spheral; false: miluphcuda)"),
         quantity("solid_density", Dimension::Density, "the eos reference density",
                  "ρ_s0: the matrix's density at P = 0"),
         quantity("porous_sound_speed", Dimension::Velocity, "the matrix's (rigid pores below Pe)",
-                 "c_e: the porous material's sound speed at α0"),
+                 "p_alpha: c_e, the porous material's sound speed at α0"),
         number("max_distention_change", "0.02",
                "the most α may change in one step: it limits the time step"),
     };

@@ -109,8 +109,7 @@ double PalphaModel::elasticSlope(double alpha) const {
 }
 
 double PalphaModel::soundSpeed(double matrixSoundSpeed, double alpha) const {
-  const double f = std::clamp((alpha - 1.0) / (par_.initialDistention - 1.0), 0.0, 1.0);
-  return matrixSoundSpeed + f * (par_.porousSoundSpeed - matrixSoundSpeed);
+  return porousSoundSpeed(matrixSoundSpeed, alpha, par_.initialDistention, par_.porousSoundSpeed);
 }
 
 double PalphaModel::distentionRate(double alpha, double P, double rho, double dPsdRhoS,
@@ -155,6 +154,12 @@ double PalphaModel::returnToCrushCurve(double alpha, double rho, double u,
     if (ga == 0.0) return a;
   }
   return lo;  // on or just below the curve: admissible
+}
+
+double porousSoundSpeed(double matrixSoundSpeed, double alpha, double initialDistention,
+                        double initialSoundSpeed) {
+  const double f = std::clamp((alpha - 1.0) / (initialDistention - 1.0), 0.0, 1.0);
+  return matrixSoundSpeed + f * (initialSoundSpeed - matrixSoundSpeed);
 }
 
 const double* distentionColumn(const ParticleSet& p) {

@@ -25,16 +25,11 @@
 // compaction wave that verifies them.
 #include <string>
 
+#include "sim/solid/porosity_model.hpp"
+
 namespace ejecta {
 
 class EquationOfState;
-struct ParticleSet;
-
-// The particle field of the distention (sim/run/packages/porosity_package.hpp declares it).
-inline constexpr const char* kDistentionField = "distention";
-// Its column, or nullptr where the particles carry none (no porous material): the strength of a
-// porous particle is its matrix's over alpha (docs/porosity.md, "Strength of porous material").
-const double* distentionColumn(const ParticleSet& p);
 
 struct PalphaParameters {
   double initialDistention = 1.0;  // alpha_0 = 1 / (1 - porosity)
@@ -54,13 +49,15 @@ struct PalphaParameters {
   double maxChangePerStep = 0.02;
 };
 
-class PalphaModel {
+class PalphaModel final : public PorosityModel {
  public:
   // Checks the parameters (std::invalid_argument naming the scene key) and finds alpha_e.
   explicit PalphaModel(const PalphaParameters& parameters);
 
+  std::string name() const override { return "p_alpha"; }
   const PalphaParameters& parameters() const { return par_; }
-  double initialDistention() const { return par_.initialDistention; }
+  double initialDistention() const override { return par_.initialDistention; }
+  double maxChangePerStep() const override { return par_.maxChangePerStep; }
   // alpha_e: where the crush curve starts, at P = Pe.
   double elasticDistention() const { return alphaE_; }
   double transitionDistention() const { return alphaT_; }
@@ -71,8 +68,8 @@ class PalphaModel {
   double crushSlope(double P) const;
   // The elastic slope dalpha/dP (<= 0 for c_e <= c_s) at distention alpha.
   double elasticSlope(double alpha) const;
-  // The porous material's sound speed from the matrix's at the same state.
-  double soundSpeed(double matrixSoundSpeed, double alpha) const;
+  // c_e at alpha_0 (porousSoundSpeed).
+  double soundSpeed(double matrixSoundSpeed, double alpha) const override;
 
   // dalpha/dt at bulk pressure P and density rho, from the matrix's partial derivatives
   // (dPs/drho_s at constant u, dPs/du at constant rho_s, at rho_s = alpha rho) and the rates of

@@ -97,6 +97,18 @@ TEST(MpiRuns, DelayedDepositSpanningRanks) {
                                  "energy_deposits[0].time=0.004 s", "time.t_end=0.02 s"}));
 }
 
+// Porous material (docs/porosity.md): P-alpha's distention and its rate, epsilon-alpha's strain
+// and the most compressive strain reached, travel with their particles.
+TEST(MpiRuns, PalphaCompaction) {
+  expectSameAsOneRank(sceneFile("verification/compaction_1d.toml",
+                                {"bodies[0].spacing=\"0.2 mm\"", "time.t_end=\"4 us\""}));
+}
+
+TEST(MpiRuns, EpsilonAlphaCompaction) {
+  expectSameAsOneRank(sceneFile("verification/compaction_epsalpha_1d.toml",
+                                {"bodies[0].spacing=\"0.2 mm\"", "time.t_end=\"4 us\""}));
+}
+
 // Individual time steps (docs/time_steps.md): each particle's bin, its step's ends and its
 // start values travel with it; the sub-steps end where the earliest step on any rank ends, and
 // a particle that begins a step wakes its neighbours on other ranks through their halos.

@@ -6,19 +6,19 @@
 
 namespace ejecta {
 
-namespace {
-
-const PalphaModel* porosityOf(const MaterialTable& materials, int material) {
-  const Material& m = materials[static_cast<std::size_t>(material)];
-  return m.porosity ? &*m.porosity : nullptr;
-}
-
-}  // namespace
-
 PorosityPackage::PorosityPackage(const MaterialTable& materials, DensityMethod density)
-    : density_(density), initialDistention_(materials.size(), 1.0) {
-  for (std::size_t m = 0; m < materials.size(); ++m)
-    if (materials[m].porosity) initialDistention_[m] = materials[m].porosity->initialDistention();
+    : density_(density),
+      palpha_(materials.size(), nullptr),
+      epsilonAlpha_(materials.size(), nullptr),
+      initialDistention_(materials.size(), 1.0) {
+  for (std::size_t m = 0; m < materials.size(); ++m) {
+    const PorosityModel* model = materials[m].porosity.get();
+    if (!model) continue;
+    initialDistention_[m] = model->initialDistention();
+    palpha_[m] = dynamic_cast<const PalphaModel*>(model);
+    epsilonAlpha_[m] = dynamic_cast<const EpsilonAlphaModel*>(model);
+    anyEpsilonAlpha_ = anyEpsilonAlpha_ || epsilonAlpha_[m];
+  }
   largestInitialDistention_ = *std::max_element(initialDistention_.begin(), initialDistention_.end());
 }
 
@@ -44,6 +44,28 @@ void PorosityPackage::registerFields(ParticleSet& p) {
   rate.output = FieldOutput::Restart;
   p.declare(alpha);
   p.declare(rate);
+  if (anyEpsilonAlpha_) {
+    FieldSpec strain;
+    strain.name = kStrain;
+    strain.units = "1";
+    strain.description = "volumetric strain ln(V/V0) less the matrix's thermal part (epsilon-alpha)";
+    strain.output = FieldOutput::Restart;
+    strain.evolution = Evolution::Kicked;
+    strain.rate = kStrainRate;
+    FieldSpec strainRate;
+    strainRate.name = kStrainRate;
+    strainRate.units = "1/s";
+    strainRate.description = "rate of the volumetric strain";
+    strainRate.output = FieldOutput::Restart;
+    FieldSpec least;
+    least.name = kLeastStrain;
+    least.units = "1";
+    least.description = "the most compressive volumetric strain reached (epsilon-alpha)";
+    least.output = FieldOutput::Restart;
+    p.declare(strain);
+    p.declare(strainRate);
+    p.declare(least);
+  }
   if (carried) return;
   std::vector<double>& values = p.column(*p.field(kDistention), 0);
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -53,8 +75,7 @@ void PorosityPackage::registerFields(ParticleSet& p) {
 }
 
 void PorosityPackage::updateState(ParticleSet& p, const PackageContext& c) {
-  const Field& field = *p.field(kDistention);
-  const std::vector<double>& alpha = p.column(field, 0);
+  std::vector<double>& alpha = p.column(*p.field(kDistention), 0);
   const std::size_t n = p.numReal;
   matrixDensity_.resize(n);
   matrixPressure_.resize(n);
@@ -64,10 +85,19 @@ void PorosityPackage::updateState(ParticleSet& p, const PackageContext& c) {
     if (!material.porosity) continue;
     members_.clear();
     for (std::size_t i = 0; i < n; ++i)
-      if (static_cast<std::size_t>(p.material[i]) == m && selected(c.active, i)) {
-        members_.push_back(i);
-        matrixDensity_[i] = alpha[i] * p.rho[i];
+      if (static_cast<std::size_t>(p.material[i]) == m && selected(c.active, i)) members_.push_back(i);
+    if (const EpsilonAlphaModel* model = epsilonAlpha_[m]) {
+      // The distention of the present strain (kicked or predicted) and the history.
+      const std::vector<double>& eps = p.column(*p.field(kStrain), 0);
+      const std::vector<double>& least = p.column(*p.field(kLeastStrain), 0);
+      const std::ptrdiff_t count = static_cast<std::ptrdiff_t>(members_.size());
+#pragma omp parallel for schedule(static)
+      for (std::ptrdiff_t k = 0; k < count; ++k) {
+        const std::size_t i = members_[static_cast<std::size_t>(k)];
+        alpha[i] = model->distention(eps[i], least[i]);
       }
+    }
+    for (std::size_t i : members_) matrixDensity_[i] = alpha[i] * p.rho[i];
     material.eos->evaluate(matrixDensity_.data(), p.u.data(), matrixPressure_.data(),
                            matrixSoundSpeed_.data(), members_.data(), members_.size());
     for (std::size_t i : members_) {
@@ -81,54 +111,76 @@ void PorosityPackage::evaluateDerivatives(ParticleSet& p, const PackageContext& 
   const Field& field = *p.field(kDistention);
   const std::vector<double>& alpha = p.column(field, 0);
   std::vector<double>& rate = p.column(*p.field(kDistentionRate), 0);
+  double* strainRate = anyEpsilonAlpha_ ? p.column(*p.field(kStrainRate), 0).data() : nullptr;
   const bool continuity = density_ == DensityMethod::Continuity;
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(p.numReal);
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t k = 0; k < n; ++k) {
     const std::size_t i = static_cast<std::size_t>(k);
     if (!selected(c.active, i)) continue;
-    const Material& material = c.materials[static_cast<std::size_t>(p.material[i])];
-    if (!material.porosity) {
-      rate[i] = 0.0;
-      continue;
-    }
-    const double rhoS = alpha[i] * p.rho[i];
-    const EquationOfState::Slopes s = material.eos->pressureSlopes(rhoS, p.u[i]);
+    const auto m = static_cast<std::size_t>(p.material[i]);
+    rate[i] = 0.0;
     // Summation density has no rate of its own: the continuity equation's, from the velocity
     // divergence of the density pass.
     const double rhoRate = continuity ? p.drho_dt[i] : -p.rho[i] * p.divv[i];
-    rate[i] = material.porosity->distentionRate(alpha[i], p.P[i], p.rho[i], s.dRho, s.dU,
-                                                rhoRate, p.du_dt[i]);
+    if (const EpsilonAlphaModel* model = epsilonAlpha_[m]) {
+      strainRate[i] = model->strainRate(-rhoRate / p.rho[i], p.du_dt[i]);
+      continue;
+    }
+    if (strainRate) strainRate[i] = 0.0;
+    const PalphaModel* model = palpha_[m];
+    if (!model) continue;
+    const Material& material = c.materials[m];
+    const double rhoS = alpha[i] * p.rho[i];
+    const EquationOfState::Slopes s = material.eos->pressureSlopes(rhoS, p.u[i]);
+    rate[i] = model->distentionRate(alpha[i], p.P[i], p.rho[i], s.dRho, s.dU, rhoRate, p.du_dt[i]);
   }
 }
 
 void PorosityPackage::finalize(ParticleSet& p, const PackageContext& c) {
-  // The return to the crush curve of the states the step's integration left above it (and to
-  // alpha = 1 past Ps), with the pressure and sound speed of the state returned to.
+  // P-alpha: the return to the crush curve of the states the step's integration left above it
+  // (and to alpha = 1 past Ps), with the pressure and sound speed of the state returned to.
+  // epsilon-alpha: the step's strain joins the history (alpha, a function of both, is
+  // unchanged by it).
   std::vector<double>& alpha = p.column(*p.field(kDistention), 0);
+  const double* eps = anyEpsilonAlpha_ ? p.column(*p.field(kStrain), 0).data() : nullptr;
+  double* least = anyEpsilonAlpha_ ? p.column(*p.field(kLeastStrain), 0).data() : nullptr;
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(p.numReal);
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t k = 0; k < n; ++k) {
     const std::size_t i = static_cast<std::size_t>(k);
     if (!selected(c.active, i)) continue;
-    const Material& material = c.materials[static_cast<std::size_t>(p.material[i])];
-    if (!material.porosity) continue;
-    const double returned =
-        material.porosity->returnToCrushCurve(alpha[i], p.rho[i], p.u[i], *material.eos);
+    const auto m = static_cast<std::size_t>(p.material[i]);
+    if (epsilonAlpha_[m]) {
+      least[i] = std::min(least[i], eps[i]);
+      continue;
+    }
+    const PalphaModel* model = palpha_[m];
+    if (!model) continue;
+    const Material& material = c.materials[m];
+    const double returned = model->returnToCrushCurve(alpha[i], p.rho[i], p.u[i], *material.eos);
     if (returned == alpha[i]) continue;
     alpha[i] = returned;
     const double rhoS = returned * p.rho[i];
     p.P[i] = material.eos->pressure(rhoS, p.u[i]) / returned;
-    p.cs[i] = material.porosity->soundSpeed(material.eos->soundSpeed(rhoS, p.u[i]), returned);
+    p.cs[i] = model->soundSpeed(material.eos->soundSpeed(rhoS, p.u[i]), returned);
   }
 }
 
 double PorosityPackage::particleTimestep(const ParticleSet& p, const PackageContext& c,
                                          std::size_t i) const {
-  const PalphaModel* model = porosityOf(c.materials, p.material[i]);
-  const double r = std::abs(p.column(*p.field(kDistentionRate), 0)[i]);
-  if (!model || !(r > 0.0)) return std::numeric_limits<double>::infinity();
-  return model->parameters().maxChangePerStep / r;
+  const auto m = static_cast<std::size_t>(p.material[i]);
+  const PorosityModel* model = c.materials[m].porosity.get();
+  if (!model) return std::numeric_limits<double>::infinity();
+  double r = 0.0;
+  if (const EpsilonAlphaModel* strainModel = epsilonAlpha_[m])
+    r = strainModel->distentionRate(p.column(*p.field(kStrain), 0)[i],
+                                    p.column(*p.field(kLeastStrain), 0)[i],
+                                    p.column(*p.field(kStrainRate), 0)[i]);
+  else
+    r = std::abs(p.column(*p.field(kDistentionRate), 0)[i]);
+  if (!(r > 0.0)) return std::numeric_limits<double>::infinity();
+  return model->maxChangePerStep() / r;
 }
 
 double PorosityPackage::timestep(const ParticleSet& p, const PackageContext& c) const {

@@ -1,16 +1,21 @@
 #pragma once
-// Porosity: the distention alpha of the porous materials (the P-alpha model,
-// sim/solid/porosity.hpp). After each equation of state it replaces a porous particle's pressure
-// and sound speed by the porous material's, P = P_s(alpha rho, u) / alpha; after the pair
-// passes it gives alpha's rate from the rates of density and energy; at the end of a step a
-// particle loaded past Ps is fully compacted; and it votes on the time step so that alpha moves
-// by at most max_distention_change a step. It joins first, so the packages after it (burn,
-// strength, fracture) scale the porous pressure and sound speed as they would a solid's.
+// Porosity: the distention alpha of the porous materials, by P-alpha (sim/solid/porosity.hpp) or
+// epsilon-alpha (sim/solid/strain_porosity.hpp). After each equation of state it replaces a
+// porous particle's pressure and sound speed by the porous material's, P = P_s(alpha rho, u) /
+// alpha, and it votes on the time step so that alpha moves by at most max_distention_change a
+// step. It joins first, so the packages after it (burn, strength, fracture) scale the porous
+// pressure and sound speed as they would a solid's.
+// - P-alpha: after the pair passes it gives alpha's rate from the rates of density and energy;
+//   at the end of a step a state the integration left above the crush curve returns to it.
+// - epsilon-alpha: alpha is a function of the volumetric strain (evolved from the bulk's
+//   dV/V rate) and of the most compressive strain reached (raised at the end of each step),
+//   evaluated before each equation of state: no rate of its own, no return.
 #include <cstddef>
 #include <vector>
 
 #include "sim/run/physics_package.hpp"
 #include "sim/solid/porosity.hpp"
+#include "sim/solid/strain_porosity.hpp"
 #include "sim/sph/sph_options.hpp"
 
 namespace ejecta {
@@ -19,6 +24,11 @@ class PorosityPackage : public PhysicsPackage {
  public:
   static constexpr const char* kDistention = kDistentionField;
   static constexpr const char* kDistentionRate = "distention_rate";
+  // epsilon-alpha's volumetric strain eps = ln(V/V0) (less the thermal part), its rate, and the
+  // most compressive strain reached, eps_min.
+  static constexpr const char* kStrain = "volumetric_strain";
+  static constexpr const char* kStrainRate = "volumetric_strain_rate";
+  static constexpr const char* kLeastStrain = "compaction_strain";
 
   PorosityPackage(const MaterialTable& materials, DensityMethod density);
 
@@ -35,6 +45,10 @@ class PorosityPackage : public PhysicsPackage {
   double particleTimestep(const ParticleSet& p, const PackageContext& c, std::size_t i) const;
 
   DensityMethod density_;
+  // Each material's model of its kind, or null (none, or the other kind).
+  std::vector<const PalphaModel*> palpha_;
+  std::vector<const EpsilonAlphaModel*> epsilonAlpha_;
+  bool anyEpsilonAlpha_ = false;
   std::vector<double> initialDistention_;  // alpha_0 by material (1: not porous)
   double largestInitialDistention_ = 1.0;
   // Scratch of updateState: each porous material's selected particles and their matrix state.

@@ -1,5 +1,6 @@
-// The exact compaction wave of a P-alpha material (sim/exact/porous_compaction.hpp): its jump
-// conditions, its closure on the model's state, and two limits with closed forms.
+// The exact compaction wave of a P-alpha or epsilon-alpha material
+// (sim/exact/porous_compaction.hpp): its jump conditions, its closure on the model's state, and
+// limits with closed forms.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,6 +9,7 @@
 #include "sim/eos/mie_gruneisen.hpp"
 #include "sim/eos/tillotson.hpp"
 #include "sim/exact/porous_compaction.hpp"
+#include "support/strain_porosity_sets.hpp"
 
 namespace ejecta {
 namespace {
@@ -130,5 +132,54 @@ TEST(ExactPorousCompaction, TooSlowAPistonIsRefused) {
   EXPECT_THROW(exact::compactionWave(matrix, model, 0.0), std::invalid_argument);
 }
 
+// epsilon-alpha (sim/solid/strain_porosity.hpp): the aluminium of the compaction_epsalpha_1d
+// scene, which has every regime.
+EpsilonAlphaModel strainAluminium(const EquationOfState& matrix, bool thermalStrain = true) {
+  EpsilonAlphaParameters p = test::strainPorousAluminium();
+  p.thermalStrain = thermalStrain;
+  return EpsilonAlphaModel::onMatrix(p, matrix);
+}
+
+TEST(ExactPorousCompaction, EpsilonAlphaSplitsAtTheElasticStrain) {
+  const Tillotson matrix = aluminium();
+  const EpsilonAlphaModel model = strainAluminium(matrix);
+  const exact::CompactionWave w = exact::compactionWave(matrix, model, 458.0);
+  ASSERT_TRUE(w.twoWaves());
+  // The precursor ends at the elastic strain with alpha_e, at ~ the porous sound speed
+  // chi c_s0 (its strain is 2e-3: within 1%).
+  EXPECT_NEAR(model.strainOf(w.elastic.rho, w.elastic.u), -2e-3, 1e-12);
+  EXPECT_DOUBLE_EQ(w.elastic.alpha, model.elasticDistention());
+  const double cs0 = matrix.soundSpeed(matrix.referenceDensity(), 0.0);
+  EXPECT_NEAR(w.precursorSpeed, 0.78 * cs0, 0.01 * 0.78 * cs0);
+  expectJump(w.initial, w.elastic, w.precursorSpeed);
+  EXPECT_NEAR(w.elastic.alpha * w.elastic.P, matrix.pressure(w.elastic.alpha * w.elastic.rho, w.elastic.u),
+              1e-9 * w.elastic.P);
+  // The compaction shock ends on the loading curve at its own strain, in the power-law regime.
+  expectJump(w.elastic, w.compacted, w.shockSpeed);
+  const double eps = model.strainOf(w.compacted.rho, w.compacted.u);
+  EXPECT_LT(eps, model.transitionStrain());
+  EXPECT_GT(eps, model.compactionStrain());
+  EXPECT_DOUBLE_EQ(w.compacted.alpha, model.loadingDistention(eps));
+  EXPECT_NEAR(w.compacted.alpha * w.compacted.P,
+              matrix.pressure(w.compacted.alpha * w.compacted.rho, w.compacted.u), 1e-9 * w.compacted.P);
+  EXPECT_LT(w.shockSpeed, w.precursorSpeed);
+  // Without the thermal strain the precursor's density is rho_0 exp(2e-3) exactly.
+  const exact::CompactionWave cold = exact::compactionWave(matrix, strainAluminium(matrix, false), 458.0);
+  EXPECT_NEAR(cold.elastic.rho, 2700.0 / 1.275 * std::exp(2e-3), 1e-9);
+  // The thermal strain compacts more for the same state: alpha lower behind the shock.
+  EXPECT_LT(w.compacted.alpha, cold.compacted.alpha);
+}
+
+TEST(ExactPorousCompaction, EpsilonAlphaOverdrivenIsOneShockToFullCompaction) {
+  const Tillotson matrix = aluminium();
+  const EpsilonAlphaModel model = strainAluminium(matrix);
+  const exact::CompactionWave w = exact::compactionWave(matrix, model, 1500.0);
+  EXPECT_FALSE(w.twoWaves());
+  expectJump(w.initial, w.compacted, w.shockSpeed);
+  EXPECT_DOUBLE_EQ(w.compacted.alpha, 1.0);
+  EXPECT_LT(model.strainOf(w.compacted.rho, w.compacted.u), model.compactionStrain());
+}
+
 }  // namespace
 }  // namespace ejecta
+

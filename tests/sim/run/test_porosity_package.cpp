@@ -1,7 +1,7 @@
 // The porosity package (sim/run/packages/porosity_package.hpp) in runs: a porous body starts at
 // its bulk density with alpha_0 and the pressure it was given; snapshots carry the distention
-// and a restart resumes bit for bit; a bad [materials.porosity] table is refused naming the
-// file, the material and the reason.
+// and a restart resumes bit for bit (P-alpha and epsilon-alpha); a bad [materials.porosity]
+// table is refused naming the file, the material and the reason.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -25,11 +25,12 @@ fs::path tempDir(const std::string& tag) {
   return fs::temp_directory_path() / ("ejecta_porosity_" + tag + "_" + std::to_string(::getpid()));
 }
 
-RunOptions compactionRun(const fs::path& dir, const std::string& tEnd) {
+RunOptions compactionRun(const fs::path& dir, const std::string& tEnd,
+                         const std::string& scene = "compaction_1d") {
   RunOptions options;
   options.outDir = dir.string();
   options.threads = 1;
-  options.sceneSource = std::string(findEmbeddedScene("verification/compaction_1d"));
+  options.sceneSource = std::string(findEmbeddedScene("verification/" + scene));
   options.overrides = {"time.t_end=" + tEnd, "output.snapshot_interval=\"1 us\"",
                        "bodies[0].spacing=\"0.1 mm\""};
   return options;
@@ -68,14 +69,19 @@ TEST(PorosityPackage, APorousBodyStartsAtRestWithItsInitialDistention) {
   fs::remove_all(dir);
 }
 
-TEST(PorosityPackage, ARestartResumesBitForBit) {
+// Both models: P-alpha's distention and its rate; epsilon-alpha's strain and the most
+// compressive strain reached, from which its distention follows.
+class PorosityRestart : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(PorosityRestart, ResumesBitForBit) {
+  const std::string scene = GetParam();
   const fs::path straight = tempDir("straight"), resumed = tempDir("resumed");
   fs::remove_all(straight);
   fs::remove_all(resumed);
-  const RunOptions a = compactionRun(straight, "3 us");
-  ASSERT_TRUE(runScene(parseScene(a.sceneSource, "compaction_1d.toml", a.overrides), a).ok);
-  const RunOptions b = compactionRun(resumed, "2 us");
-  ASSERT_TRUE(runScene(parseScene(b.sceneSource, "compaction_1d.toml", b.overrides), b).ok);
+  const RunOptions a = compactionRun(straight, "3 us", scene);
+  ASSERT_TRUE(runScene(parseScene(a.sceneSource, scene + ".toml", a.overrides), a).ok);
+  const RunOptions b = compactionRun(resumed, "2 us", scene);
+  ASSERT_TRUE(runScene(parseScene(b.sceneSource, scene + ".toml", b.overrides), b).ok);
   RunOptions extend;
   extend.threads = 1;
   extend.restartOverrides = {"time.t_end=\"3 us\""};
@@ -94,6 +100,9 @@ TEST(PorosityPackage, ARestartResumesBitForBit) {
   fs::remove_all(straight);
   fs::remove_all(resumed);
 }
+
+INSTANTIATE_TEST_SUITE_P(BothModels, PorosityRestart,
+                         ::testing::Values("compaction_1d", "compaction_epsalpha_1d"));
 
 std::string withPorosity(const std::string& eos, const std::string& table) {
   return "[scene]\nname = \"p\"\ndimension = \"1d\"\n[time]\nt_end = 1e-6\n"
@@ -124,6 +133,34 @@ TEST(PorosityPackage, BadTablesAreRefusedWithTheirReason) {
   const std::string unknown = error(granite, crush + "porosity = 0.3\nalpha_0 = 1.4");
   EXPECT_NE(unknown.find("alpha_0"), std::string::npos) << unknown;
   EXPECT_EQ(error(granite, crush + "porosity = 0.3"), "no error");
+  // A key of the other model is named with the model it belongs to.
+  const std::string other = error(granite, crush + "porosity = 0.3\nkappa = 0.9");
+  EXPECT_NE(other.find("porosity.kappa does not apply to model \"p_alpha\"; it applies only to "
+                       "\"epsilon_alpha\""),
+            std::string::npos)
+      << other;
+}
+
+TEST(PorosityPackage, BadEpsilonAlphaTablesAreRefusedWithTheirReason) {
+  const std::string granite = "eos = \"tillotson\"\nlibrary = \"granite\"";
+  const std::string sand = "porosity = 0.44\nkappa = 0.988\ntransition_distention = 1.29\n";
+  auto error = [&](const std::string& table) {
+    return test::materialSceneError(withPorosity(granite, "model = \"epsilon_alpha\"\n" + table));
+  };
+  EXPECT_EQ(error(sand + "sound_speed_ratio = 0.33\nelastic_strain = 1e-4"), "no error");
+  EXPECT_NE(error("porosity = 0.44\nkappa = 0.9").find("needs transition_distention"),
+            std::string::npos);
+  const std::string kappa = error("porosity = 0.44\nkappa = 1.2\ntransition_distention = 1.29");
+  EXPECT_NE(kappa.find("material 'rubble'"), std::string::npos) << kappa;
+  EXPECT_NE(kappa.find("kappa must lie in (0, 1)"), std::string::npos) << kappa;
+  EXPECT_NE(error(sand + "sound_speed_ratio = 1.5").find("sound_speed_ratio"), std::string::npos);
+  EXPECT_NE(error("porosity = 0.44\nkappa = 0.9\ntransition_distention = 2.5")
+                .find("transition_distention (alpha_x) must lie in"),
+            std::string::npos);
+  const std::string pressure = error(sand + "elastic_pressure = \"1 MPa\"");
+  EXPECT_NE(pressure.find("porosity.elastic_pressure does not apply to model \"epsilon_alpha\""),
+            std::string::npos)
+      << pressure;
 }
 
 }  // namespace

@@ -22,6 +22,7 @@
 #include "sim/setup/scene_schema.hpp"
 #include "sim/solid/fracture.hpp"
 #include "sim/solid/porosity.hpp"
+#include "sim/solid/strain_porosity.hpp"
 #include "sim/solid/material_spec.hpp"
 #include "sim/solid/model_keys.hpp"
 #include "sim/solid/strength_models/johnson_cook.hpp"
@@ -122,6 +123,7 @@ TEST(SceneKeyReference, DefaultsAreTheCodes) {
   const ThermalModel thermal;
   const FractureModel fracture;
   const PalphaParameters porosity;
+  const EpsilonAlphaParameters strainPorosity;
   const std::vector<std::tuple<std::string_view, std::string_view, double>> cases = {
       {"sph", "eta", sph.eta},
       {"sph", "relaxation", sph.relaxation},
@@ -165,6 +167,10 @@ TEST(SceneKeyReference, DefaultsAreTheCodes) {
       {"materials[].porosity", "crush_exponent", porosity.crushExponent},
       {"materials[].porosity", "transition_exponent", porosity.transitionExponent},
       {"materials[].porosity", "max_distention_change", porosity.maxChangePerStep},
+      {"materials[].porosity", "max_distention_change", strainPorosity.maxChangePerStep},
+      {"materials[].porosity", "elastic_strain", -strainPorosity.elasticStrain},
+      {"materials[].porosity", "sound_speed_ratio", strainPorosity.soundSpeedRatio},
+      {"materials[].porosity", "thermal_strain", strainPorosity.thermalStrain ? 1.0 : 0.0},
   };
   for (const auto& [path, key, code] : cases)
     EXPECT_EQ(defaultValue(path, key), code) << path << "." << key;
