@@ -8,11 +8,14 @@ namespace ejecta::exact {
 
 namespace {
 
-// The root of f on [lo, hi] where f(lo) > 0 > f(hi), to round-off.
+// The root of f on [lo, hi] where f(lo) > 0 > f(hi), to round-off (200 halvings always get
+// there from a finite bracket; a residual that is not a number is refused).
 double bisect(const std::function<double(double)>& f, double lo, double hi) {
   for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) {
     const double mid = 0.5 * (lo + hi);
-    (f(mid) > 0.0 ? lo : hi) = mid;
+    const double value = f(mid);
+    if (std::isnan(value)) throw std::domain_error("compactionWave: the jump's residual is not a number");
+    (value > 0.0 ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
 }
@@ -79,7 +82,8 @@ Jump jumpToStrain(const EquationOfState& matrix, const EpsilonAlphaModel& model,
   const double strain = model.parameters().elasticStrain;
   auto behind = [&](double rho) {
     PorousState b{rho, a.u, a.P, 0.0, alpha};
-    for (int it = 0; it < 100; ++it) {
+    for (int it = 0;; ++it) {
+      if (it == 100) throw std::domain_error("compactionWave: the precursor's energy did not settle");
       b.P = matrix.pressure(alpha * rho, b.u) / alpha;
       const double u = a.u + 0.5 * (a.P + b.P) * (1.0 / a.rho - 1.0 / rho);
       const bool settled = std::abs(u - b.u) <= 1e-15 * std::abs(u) + 1e-300;

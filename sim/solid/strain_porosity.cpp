@@ -23,7 +23,8 @@ EpsilonAlphaModel::EpsilonAlphaModel(const EpsilonAlphaParameters& parameters) :
   if (!(p.elasticStrain <= 0.0) || !std::isfinite(p.elasticStrain))
     fail("the elastic strain eps_e must be zero or negative (compression)");
   // kappa >= 1 would close the pores faster than the bulk compresses: the matrix would expand,
-  // and its pressure fall, under compression (alpha rho grows as exp((1 - kappa)|eps|)).
+  // and its pressure fall, under compression (alpha rho grows as exp((1 - kappa)|eps|)), and
+  // the compaction shock would lose its unique state.
   if (!(p.kappa > 0.0 && p.kappa < 1.0)) fail("kappa must lie in (0, 1)");
   if (!(p.soundSpeedRatio > 0.0 && p.soundSpeedRatio <= 1.0))
     fail("sound_speed_ratio (chi = c_0 / c_s0) must lie in (0, 1]");
@@ -45,6 +46,13 @@ EpsilonAlphaModel::EpsilonAlphaModel(const EpsilonAlphaParameters& parameters) :
   if (!(p.transitionDistention >= 1.0 && p.transitionDistention <= alphaE_))
     fail("transition_distention (alpha_x) must lie in [1, alpha_e = " + std::to_string(alphaE_) +
          "]");
+  // The same bound on the power law: its (dalpha/deps)/alpha = kappa alpha_x x/(1 + (alpha_x -
+  // 1) x^2), x = (eps_c - eps)/(eps_c - eps_x) in [0, 1], peaks at kappa inside the segment
+  // only for alpha_x <= 2; above, at kappa alpha_x / (2 sqrt(alpha_x - 1)).
+  const double ax = p.transitionDistention;
+  if (ax > 2.0 && !(p.kappa * ax < 2.0 * std::sqrt(ax - 1.0)))
+    fail("kappa alpha_x / (2 sqrt(alpha_x - 1)) must be below 1 (alpha_x = " + std::to_string(ax) +
+         "): the power law would close the pores faster than the bulk compresses");
   epsX_ = p.elasticStrain + std::log(p.transitionDistention / alphaE_) / p.kappa;
   epsC_ = epsX_ + 2.0 * (1.0 - p.transitionDistention) / (p.kappa * p.transitionDistention);
 }
@@ -134,7 +142,12 @@ double EpsilonAlphaModel::distention(double eps, double epsMin) const {
 
 double EpsilonAlphaModel::distentionRate(double eps, double epsMin, double epsRate) const {
   const bool loading = epsRate < 0.0 && eps <= epsMin;
-  const double slope = loading ? loadingSlope(eps) : elasticSlope(distention(eps, epsMin));
+  if (!loading) return std::abs(elasticSlope(distention(eps, epsMin)) * epsRate);
+  // Loading in the elastic range the next step may cross eps_e, where the slope jumps to
+  // kappa alpha_e: the vote takes the larger (the elastic range is ~1e-3 of strain, so this costs
+  // nothing there).
+  double slope = loadingSlope(eps);
+  if (eps >= par_.elasticStrain) slope = std::max(slope, par_.kappa * alphaE_);
   return std::abs(slope * epsRate);
 }
 

@@ -24,8 +24,9 @@
 // The strain that drives alpha leaves out the matrix's thermal expansion (as iSALE/SALEc and
 // Spheral do; miluphcuda does not, `thermal_strain = false`): deps = dV/V - Gamma_0/c_s0^2 du,
 // with Gamma_0 the matrix's Grüneisen parameter at its reference state. The coefficient is a
-// constant, so eps = ln(rho_0/rho) - Gamma_0/c_s0^2 (u - u_0) is a function of the state: the
-// exact compaction wave of sim/exact/porous_compaction.hpp closes on it.
+// constant, so eps = ln(rho_0/rho) - Gamma_0/c_s0^2 u for material starting at rest at u = 0 is a
+// function of the state: the exact compaction wave of sim/exact/porous_compaction.hpp closes on
+// it.
 #include <string>
 
 #include "sim/solid/porosity_model.hpp"
@@ -84,7 +85,8 @@ class EpsilonAlphaModel final : public PorosityModel {
   // min(eps, eps_min), unloaded elastically to eps), at most alpha_0.
   double distention(double eps, double epsMin) const;
   // |dalpha/dt| at that state for a strain rate epsRate: the loading slope where the strain
-  // passes eps_min, the elastic one otherwise (the time-step vote).
+  // passes eps_min (at least kappa alpha_e in the elastic range, whose end the step may cross),
+  // the elastic one otherwise (the time-step vote).
   double distentionRate(double eps, double epsMin, double epsRate) const;
   // The elastic law carried from alpha over a strain change dEps (closed form, inverted by
   // Newton's method), in [1, alpha_0].

@@ -167,33 +167,43 @@ void PorosityPackage::finalize(ParticleSet& p, const PackageContext& c) {
   }
 }
 
+PorosityPackage::StepColumns PorosityPackage::stepColumns(const ParticleSet& p) const {
+  StepColumns columns;
+  columns.distentionRate = p.column(*p.field(kDistentionRate), 0).data();
+  if (anyEpsilonAlpha_) {
+    columns.strain = p.column(*p.field(kStrain), 0).data();
+    columns.leastStrain = p.column(*p.field(kLeastStrain), 0).data();
+    columns.strainRate = p.column(*p.field(kStrainRate), 0).data();
+  }
+  return columns;
+}
+
 double PorosityPackage::particleTimestep(const ParticleSet& p, const PackageContext& c,
-                                         std::size_t i) const {
+                                         const StepColumns& columns, std::size_t i) const {
   const auto m = static_cast<std::size_t>(p.material[i]);
   const PorosityModel* model = c.materials[m].porosity.get();
   if (!model) return std::numeric_limits<double>::infinity();
-  double r = 0.0;
-  if (const EpsilonAlphaModel* strainModel = epsilonAlpha_[m])
-    r = strainModel->distentionRate(p.column(*p.field(kStrain), 0)[i],
-                                    p.column(*p.field(kLeastStrain), 0)[i],
-                                    p.column(*p.field(kStrainRate), 0)[i]);
-  else
-    r = std::abs(p.column(*p.field(kDistentionRate), 0)[i]);
+  const EpsilonAlphaModel* strainModel = epsilonAlpha_[m];
+  const double r = strainModel ? strainModel->distentionRate(columns.strain[i], columns.leastStrain[i],
+                                                             columns.strainRate[i])
+                               : std::abs(columns.distentionRate[i]);
   if (!(r > 0.0)) return std::numeric_limits<double>::infinity();
   return model->maxChangePerStep() / r;
 }
 
 double PorosityPackage::timestep(const ParticleSet& p, const PackageContext& c) const {
+  const StepColumns columns = stepColumns(p);
   double dt = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < p.numReal; ++i) dt = std::min(dt, particleTimestep(p, c, i));
+  for (std::size_t i = 0; i < p.numReal; ++i) dt = std::min(dt, particleTimestep(p, c, columns, i));
   return dt;
 }
 
 void PorosityPackage::particleTimesteps(const ParticleSet& p, const PackageContext& c,
                                         std::span<const std::size_t> which,
                                         std::span<double> dt) const {
+  const StepColumns columns = stepColumns(p);
   for (std::size_t k = 0; k < which.size(); ++k)
-    dt[k] = std::min(dt[k], particleTimestep(p, c, which[k]));
+    dt[k] = std::min(dt[k], particleTimestep(p, c, columns, which[k]));
 }
 
 }  // namespace ejecta

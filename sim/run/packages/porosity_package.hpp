@@ -8,8 +8,11 @@
 // - P-alpha: after the pair passes it gives alpha's rate from the rates of density and energy;
 //   at the end of a step a state the integration left above the crush curve returns to it.
 // - epsilon-alpha: alpha is a function of the volumetric strain (evolved from the bulk's
-//   dV/V rate) and of the most compressive strain reached (raised at the end of each step),
-//   evaluated before each equation of state: no rate of its own, no return.
+//   dV/V rate) and of the most compressive strain reached (lowered to the strain at the end of
+//   each step), evaluated before each equation of state: no rate of its own, no return. The
+//   shared distention field is kicked with rate 0 for these particles (the integrator may set it
+//   back to its step-start value); the equation of state that follows every kick recomputes it
+//   before anything reads it.
 #include <cstddef>
 #include <vector>
 
@@ -42,7 +45,16 @@ class PorosityPackage : public PhysicsPackage {
                          std::span<const std::size_t> which, std::span<double> dt) const override;
 
  private:
-  double particleTimestep(const ParticleSet& p, const PackageContext& c, std::size_t i) const;
+  // The columns the step vote reads, looked up once per vote.
+  struct StepColumns {
+    const double* distentionRate = nullptr;
+    const double* strain = nullptr;
+    const double* leastStrain = nullptr;
+    const double* strainRate = nullptr;
+  };
+  StepColumns stepColumns(const ParticleSet& p) const;
+  double particleTimestep(const ParticleSet& p, const PackageContext& c, const StepColumns& columns,
+                          std::size_t i) const;
 
   DensityMethod density_;
   // Each material's model of its kind, or null (none, or the other kind).

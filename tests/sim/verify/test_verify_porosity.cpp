@@ -93,48 +93,54 @@ TEST(VerifyPorosity, EpsilonAlphaAluminiumMatchesThePrecursorAndTheCompactionSho
   // -0.54%, energy +0.05%, alpha 1.0208 against 1.0232. The offset is the SPH shock's density
   // overshoot kept by the irreversible model: each particle's strain passes its final value by
   // ~3e-3 inside the front, so its pores stay as crushed as at that peak (docs/porosity.md).
-  // The bounds are twice those.
-  EXPECT_LT(std::abs(run.metric("compacted_density_error")), 0.005);
-  EXPECT_LT(std::abs(run.metric("compacted_pressure_error")), 0.012);
-  EXPECT_LT(std::abs(run.metric("compacted_energy_error")), 0.002);
-  EXPECT_NEAR(run.metric("compacted_distention"), run.metric("compacted_distention_exact"), 0.005);
+  // The bounds are 1.5-2x those (alpha: 0.004 of the 0.023 it has left).
+  EXPECT_LT(std::abs(run.metric("compacted_density_error")), 0.004);
+  EXPECT_LT(std::abs(run.metric("compacted_pressure_error")), 0.01);
+  EXPECT_LT(std::abs(run.metric("compacted_energy_error")), 1e-3);
+  EXPECT_NEAR(run.metric("compacted_distention"), run.metric("compacted_distention_exact"), 0.004);
   EXPECT_GT(run.metric("compacted_distention"), 1.01);  // still porous: the power-law regime
   EXPECT_LT(std::abs(run.metric("shock_position_error")), 0.02);  // measured -1.1%
   // L1 falls with the spacing (measured 2.5e-3 -> 2.0e-3; the plateau's offset sets its floor).
-  EXPECT_LT(run.metric("L1_density"), 4e-3);
+  EXPECT_LT(run.metric("L1_density"), 3e-3);
   EXPECT_LT(run.metric("L1_density"), r.runs.front().metric("L1_density"));
-  EXPECT_LT(std::abs(run.energyError), 1e-3);  // measured 3.5e-5
+  EXPECT_LT(std::abs(run.energyError), 1e-4);  // measured -1.0e-5
 }
 
 // iSALE's 44%-porous sand (alpha_0 = 1.80, kappa = 0.988, alpha_x = 1.29, chi = 0.33) on a
 // granite matrix at 500 m/s: one compaction shock from rest (eps_e = 0), 300 and 600 particles.
 // Measured: density +0.55%, pressure +0.37%, energy +4e-5, alpha 1.0595 against 1.0655 (the
-// overshoot above), shock position -0.6%, L1 8.8e-3 -> 6.8e-3, energy error 2.4e-5. Bounds twice
-// those or more.
+// overshoot above), shock position -0.6%, L1 8.8e-3 -> 6.8e-3, energy error 2.4e-5. Bounds
+// 1.5-2x those (the energy's, which is tiny, 5e-4).
 TEST(VerifyPorosity, EpsilonAlphaSandCompactsInOneShock) {
   const Report r = runProblem("compaction_sand_1d", Options{});
   const ResolutionRun& run = r.runs.back();
-  EXPECT_LT(std::abs(run.metric("compacted_density_error")), 0.012);
-  EXPECT_LT(std::abs(run.metric("compacted_pressure_error")), 0.01);
-  EXPECT_LT(std::abs(run.metric("compacted_energy_error")), 0.002);
-  EXPECT_NEAR(run.metric("compacted_distention"), run.metric("compacted_distention_exact"), 0.012);
+  EXPECT_LT(std::abs(run.metric("compacted_density_error")), 0.009);
+  EXPECT_LT(std::abs(run.metric("compacted_pressure_error")), 0.007);
+  EXPECT_LT(std::abs(run.metric("compacted_energy_error")), 5e-4);
+  EXPECT_NEAR(run.metric("compacted_distention"), run.metric("compacted_distention_exact"), 0.009);
   EXPECT_GT(run.metric("compacted_distention"), 1.04);
-  EXPECT_LT(std::abs(run.metric("shock_position_error")), 0.015);
-  EXPECT_LT(run.metric("L1_density"), 0.012);
+  EXPECT_LT(std::abs(run.metric("shock_position_error")), 0.012);
+  EXPECT_LT(run.metric("L1_density"), 0.01);
   EXPECT_LT(run.metric("L1_density"), r.runs.front().metric("L1_density"));
-  EXPECT_LT(std::abs(run.energyError), 1e-3);
+  EXPECT_LT(std::abs(run.energyError), 1e-4);
 }
 
-// Individual time steps carry the strain as every other kicked field (measured: the same plateau
-// to 1e-5, energy error -4.7e-4).
+// Individual time steps carry the strain and its history as every other kicked field: the
+// aluminium (every regime, an elastic precursor) gives the plateau of global steps (measured:
+// alpha 5e-5 apart, the density, pressure and front errors within 2e-4 of global steps', the
+// energy error 7.5e-5).
 TEST(VerifyPorosity, EpsilonAlphaWithIndividualTimeStepsCompactsAsGlobalStepsDo) {
   Options o;
+  o.resolutions = 1;
+  const ResolutionRun global = runProblem("compaction_epsalpha_1d", o).runs.back();
   o.overrides = {"time.stepping=individual"};
-  const ResolutionRun run = runProblem("compaction_sand_1d", o).runs.back();
-  EXPECT_LT(std::abs(run.metric("compacted_density_error")), 0.012);
-  EXPECT_NEAR(run.metric("compacted_distention"), run.metric("compacted_distention_exact"), 0.012);
-  EXPECT_LT(std::abs(run.metric("shock_position_error")), 0.015);
-  EXPECT_LT(std::abs(run.energyError), 2e-3);
+  const ResolutionRun individual = runProblem("compaction_epsalpha_1d", o).runs.back();
+  for (const char* metric : {"compacted_distention", "elastic_distention"})
+    EXPECT_NEAR(individual.metric(metric), global.metric(metric), 2e-4) << metric;
+  for (const char* metric : {"compacted_density_error", "compacted_pressure_error",
+                             "shock_position_error", "precursor_position_error"})
+    EXPECT_NEAR(individual.metric(metric), global.metric(metric), 1e-3) << metric;
+  EXPECT_LT(std::abs(individual.energyError), 5e-4);
 }
 
 // Strength of porous material: the bulk carries its matrix's stress over alpha, as it carries
