@@ -54,7 +54,6 @@ class PalphaModel final : public PorosityModel {
   // Checks the parameters (std::invalid_argument naming the scene key) and finds alpha_e.
   explicit PalphaModel(const PalphaParameters& parameters);
 
-  std::string name() const override { return "p_alpha"; }
   const PalphaParameters& parameters() const { return par_; }
   double initialDistention() const override { return par_.initialDistention; }
   double maxChangePerStep() const override { return par_.maxChangePerStep; }

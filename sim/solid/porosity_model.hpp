@@ -20,7 +20,6 @@ const double* distentionColumn(const ParticleSet& p);
 class PorosityModel {
  public:
   virtual ~PorosityModel() = default;
-  virtual std::string name() const = 0;  // the scene's `model` value
   // alpha_0 = 1 / (1 - porosity) of material at rest at zero pressure.
   virtual double initialDistention() const = 0;
   // The porous material's sound speed from its matrix's at the same state: linear in alpha from

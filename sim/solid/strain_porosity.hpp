@@ -58,7 +58,6 @@ class EpsilonAlphaModel final : public PorosityModel {
   static EpsilonAlphaModel onMatrix(EpsilonAlphaParameters parameters,
                                     const EquationOfState& matrix);
 
-  std::string name() const override { return "epsilon_alpha"; }
   const EpsilonAlphaParameters& parameters() const { return par_; }
   double initialDistention() const override { return par_.initialDistention; }
   double maxChangePerStep() const override { return par_.maxChangePerStep; }
