@@ -109,6 +109,14 @@ int craterCommand(const CraterArgs& args) {
     std::printf("  volume %.4g m^3, excavated mass %.4g kg, elongation %.3f (%.3f m along, %.3f m across)\n",
                 metrics.volume, metrics.excavatedMass, metrics.elongation,
                 metrics.alongTrackDiameter, metrics.crossTrackDiameter);
+  if (setup.scaling) {
+    // The scene's [crater] scaling (fields/crater_scaling.hpp).
+    const fields::ScaledCrater k = fields::scaleCrater(setup.scaling->law, setup.scaling->impact);
+    std::printf("  pi-group scaling (%s, %s regime): volume %.4g m^3, diameter %.3g m, depth %.3g m; "
+                "this crater's volume is %.3g of it\n",
+                setup.scaling->law.name.c_str(), k.strengthRegime ? "strength" : "gravity", k.volume,
+                2.0 * k.radius, k.depth, metrics.volume / k.volume);
+  }
   if (!metrics.note.empty()) std::printf("  note: %s\n", metrics.note.c_str());
   return 0;
 }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <stdexcept>
 
 namespace ejecta::fields {
 
@@ -25,6 +27,58 @@ Point bodyCentre(const ShapeSpec& s) {
 }
 
 double outerRadius(const ShapeSpec& s) { return s.radius; }
+
+// The impactor's volume [m^3] in RZ (shapes revolved about the axis) or 3D; 0 for a shape with
+// no finite volume.
+double impactorVolume(const ShapeSpec& s, Geometry g) {
+  const double pi = std::numbers::pi;
+  switch (s.kind) {
+    case ShapeKind::Sphere: return 4.0 / 3.0 * pi * s.radius * s.radius * s.radius;
+    case ShapeKind::Shell:
+      return 4.0 / 3.0 * pi * (std::pow(s.radius, 3) - std::pow(s.innerRadius, 3));
+    case ShapeKind::Box:
+      if (g == Geometry::Axisymmetric)  // a ring of r in [min_r, max_r]
+        return pi * (s.max[0] * s.max[0] - s.min[0] * s.min[0]) * (s.max[1] - s.min[1]);
+      return (s.max[0] - s.min[0]) * (s.max[1] - s.min[1]) * (s.max[2] - s.min[2]);
+    case ShapeKind::HalfSpace: return 0.0;
+  }
+  return 0.0;
+}
+
+// The pi-group scaling [crater] scaling asks for: the class and the impact's numbers.
+void addScaling(const Scene& scene, const BodySpec& impactor, CraterSetup& setup) {
+  const std::string where = scene.sourcePath + ": crater.scaling: ";
+  const CraterScalingLaw* law = craterScalingClass(scene.crater.scaling);
+  if (!law)
+    throw SceneError(where + "no class '" + scene.crater.scaling + "' (the classes: " +
+                     craterScalingClassNames() + ")");
+  if (setup.planar)
+    throw SceneError(where + "pi-group scaling is for craters in 3D or RZ; a 2D planar run's "
+                     "crater is a trench");
+  const double volume = impactorVolume(impactor.shape, scene.geometry);
+  if (!(volume > 0.0))
+    throw SceneError(where + "the impactor '" + impactor.name + "' has no finite volume");
+  ScalingImpact impact;
+  impact.impactorMass = impactor.density * volume;
+  impact.impactorRadius = std::cbrt(3.0 * volume / (4.0 * std::numbers::pi));
+  impact.speed = norm(impactor.velocity);
+  impact.targetDensity = setup.targetDensity;
+  if (scene.crater.gravity) {
+    impact.gravity = *scene.crater.gravity;
+  } else if (setup.surface.kind == ReferenceSurface::Kind::Sphere) {
+    // A uniform sphere of the outer target's density: g = G M / R^2 = (4/3) pi G rho R, with
+    // G = 6.67430e-11 m^3 kg^-1 s^-2 (CODATA 2018).
+    constexpr double kGravitationalConstant = 6.67430e-11;
+    impact.gravity = 4.0 / 3.0 * std::numbers::pi * kGravitationalConstant *
+                     setup.targetDensity * setup.surface.radius;
+  }
+  try {
+    scaleCrater(*law, impact);  // refused now, not after the run
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(where + e.what() + (scene.crater.gravity ? "" : "; give [crater] gravity"));
+  }
+  setup.scaling = CraterScaling{*law, impact};
+}
 
 // First hit of the ray c + t d (t > 0, |d| = 1) on an axis-aligned box's faces, as a plane.
 std::optional<ReferenceSurface> boxFaceHit(const ShapeSpec& box, const Point& c, const Point& d,
@@ -54,7 +108,23 @@ std::optional<ReferenceSurface> boxFaceHit(const ShapeSpec& box, const Point& c,
 
 }  // namespace
 
+namespace {
+
+std::optional<CraterSetup> impactSetup(const Scene& scene);
+
+}  // namespace
+
 std::optional<CraterSetup> craterSetupFromScene(const Scene& scene) {
+  std::optional<CraterSetup> setup = impactSetup(scene);
+  if (!setup && scene.crater.enabled && !scene.crater.scaling.empty())
+    throw SceneError(scene.sourcePath + ": crater.scaling: the scene has no impact to scale (a "
+                     "moving body striking bodies at rest, in RZ or 3D)");
+  return setup;
+}
+
+namespace {
+
+std::optional<CraterSetup> impactSetup(const Scene& scene) {
   if (!scene.crater.enabled || scene.geometry == Geometry::Line) return std::nullopt;
   const int dims = spatialDimension(scene.geometry);
   const BodySpec* impactor = nullptr;
@@ -151,8 +221,11 @@ std::optional<CraterSetup> craterSetupFromScene(const Scene& scene) {
     const double t = disc >= 0.0 ? -b - std::sqrt(disc) : -b;
     setup.impactPoint = add(c, d, t);
   }
+  if (!scene.crater.scaling.empty()) addScaling(scene, *impactor, setup);
   return setup;
 }
+
+}  // namespace
 
 CraterOptions craterOptions(const CraterSetup& setup, double resolution) {
   CraterOptions o;

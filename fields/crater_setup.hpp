@@ -7,9 +7,16 @@
 #include <vector>
 
 #include "fields/crater.hpp"
+#include "fields/crater_scaling.hpp"
 #include "sim/setup/scene.hpp"
 
 namespace ejecta::fields {
+
+// [crater] scaling: the class and the impact it scales.
+struct CraterScaling {
+  CraterScalingLaw law;
+  ScalingImpact impact;
+};
 
 struct CraterSetup {
   ReferenceSurface surface;
@@ -22,12 +29,14 @@ struct CraterSetup {
   double searchLimit = 0.0;
   std::vector<int> targetMaterials;         // material indices
   std::vector<std::string> targetNames;     // their names
+  std::optional<CraterScaling> scaling;      // [crater] scaling, if given
 };
 
 // The setup for an impact scene, in grid coordinates (RZ: (r, z) -> (x, y), axis along y), or
 // nothing when the scene is not one (1D; no moving body; no body at rest; [crater] enabled =
 // false). A [crater] materials list replaces the bodies-at-rest rule. Throws SceneError when the
-// target surface cannot be worked out (e.g. only box targets that the path misses).
+// target surface cannot be worked out (e.g. only box targets that the path misses), and when
+// [crater] scaling cannot be applied (an unknown class, a planar run, a scene with no impact).
 std::optional<CraterSetup> craterSetupFromScene(const Scene& scene);
 
 // Options for analyseCrater from a setup at the given resolution [m]: the search reaches 120

@@ -43,6 +43,15 @@ void addToSummary(const CraterSummary& c, RunSummary& s) {
     s.extras.push_back({"crater_excavated_mass_kg", c.excavatedMass});
     s.extras.push_back({"crater_elongation", c.elongation});
   }
+  if (c.scaled) {
+    const ScaledCrater& k = *c.scaled;
+    s.extras.push_back({"crater_scaling_class", c.scalingClass});
+    s.extras.push_back({"crater_scaling_regime", std::string(k.strengthRegime ? "strength" : "gravity")});
+    s.extras.push_back({"crater_scaled_volume_m3", k.volume});
+    s.extras.push_back({"crater_scaled_diameter_m", 2.0 * k.radius});
+    s.extras.push_back({"crater_scaled_depth_m", k.depth});
+    if (c.found && !c.planar) s.extras.push_back({"crater_volume_over_scaled", c.volume / k.volume});
+  }
 }
 
 }  // namespace ejecta::fields

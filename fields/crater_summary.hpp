@@ -7,6 +7,7 @@
 
 #include "fields/crater.hpp"
 #include "fields/crater_growth.hpp"
+#include "fields/crater_scaling.hpp"
 #include "sim/run/summary.hpp"
 
 namespace ejecta::fields {
@@ -21,6 +22,9 @@ struct CraterSummary {
   double elongation = 1.0;     // along-track / cross-track diameter; not for planar runs
   // Over the last fifth of the run (fields/crater_growth.hpp); none when the history is short.
   std::optional<CraterGrowth> growth;
+  // [crater] scaling: the class and the crater pi-group scaling gives (fields/crater_scaling.hpp).
+  std::string scalingClass;
+  std::optional<ScaledCrater> scaled;
 };
 
 CraterSummary craterSummary(const CraterMetrics& metrics, bool planar);

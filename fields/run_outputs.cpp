@@ -89,6 +89,10 @@ void addFieldOutputs(RunOptions& options, const Scene& scene,
                                     : measureCrater(sim.particles(), ctx, *crater, resolution, &sim.ranks());
         if (!sim.ranks().isRoot()) return;
         CraterSummary c = craterSummary(m, crater->planar);
+        if (crater->scaling) {
+          c.scalingClass = crater->scaling->law.name;
+          c.scaled = scaleCrater(crater->scaling->law, crater->scaling->impact);
+        }
         std::vector<std::string> rows = tracking->history.rows();
         if (!(tracking->last && tracking->lastTime == sim.time()))
           rows.push_back(craterHistoryRow(sim.time(), m, crater->planar));

@@ -38,6 +38,9 @@ struct CraterAnalysisOptions {
   bool enabled = true;
   std::vector<std::string> materials;   // target materials; empty: those of the bodies at rest
   double resolution = 0.0;              // [m]; 0 = half the median smoothing length
+  // The pi-group scaling class the crater is set beside (fields/crater_scaling.hpp); empty: none.
+  std::string scaling;
+  std::optional<double> gravity;        // [m/s^2] for the scaling; none: a uniform sphere's
 };
 
 // [fragments]: fragment identification at the end of the run and at chosen outputs

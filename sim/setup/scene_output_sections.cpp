@@ -83,6 +83,12 @@ void readCrater(const TableReader& root, Scene& scene) {
   c.resolution = r.optQuantity("resolution", Dimension::Length).value_or(0.0);
   r.check(c.resolution >= 0.0, "resolution",
           nonNegativeMessage(c.resolution, Dimension::Length) + "; 0 = half the median h");
+  // The class name is checked where the classes live (fields/crater_setup.cpp), before the run.
+  c.scaling = r.optString("scaling").value_or("");
+  c.gravity = r.optQuantity("gravity", Dimension::Acceleration);
+  if (c.gravity)
+    r.check(*c.gravity >= 0.0, "gravity", nonNegativeMessage(*c.gravity, Dimension::Acceleration));
+  r.check(!c.gravity || !c.scaling.empty(), "gravity", "is for the crater scaling: give `scaling` too");
 }
 
 namespace {

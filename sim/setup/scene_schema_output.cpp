@@ -30,7 +30,13 @@ std::vector<SceneTable> outputTables() {
        {boolean("enabled", "true", "measure the crater at the end of an impact run"),
         textList("materials", "the bodies at rest", "target materials"),
         quantity("resolution", m, "0",
-                 "measuring resolution; 0 = half the median smoothing length")}},
+                 "measuring resolution; 0 = half the median smoothing length"),
+        text("scaling", "none",
+             "set the crater beside pi-group scaling for this class of target: water, dry_sand, "
+             "dry_soil, wet_soil, soft_rock, hard_rock (Holsapple 1993; docs/crater.md)"),
+        quantity("gravity", Dimension::Acceleration, "a uniform sphere's",
+                 "surface gravity for the scaling; default on a sphere (4/3) pi G rho R, on a "
+                 "plane 0")}},
       {"fragments",
        "`[fragments]` (optional: fragment identification, docs/fragments.md)",
        "",

@@ -1,0 +1,221 @@
+// Pi-group crater scaling (fields/crater_scaling.hpp): the law in its two regimes and their
+// joint, its similarity exponents, the class table against its own source's second column, the
+// errors; and [crater] scaling through the scene, the crater setup and a run's summary.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <unistd.h>
+
+#include "fields/crater_scaling.hpp"
+#include "fields/crater_setup.hpp"
+#include "fields/run_outputs.hpp"
+#include "sim/run/run.hpp"
+#include "sim/setup/scene.hpp"
+#include "sim/setup/scene_schema.hpp"
+#include "tests/support/tiny_impact.hpp"
+
+namespace fs = std::filesystem;
+
+namespace ejecta::fields {
+namespace {
+
+// The RZ kinetic impact (scenes/impact_rz.toml): a 1 m Al-2024 sphere (2785 kg/m^3) at 10 km/s
+// on granite (2680 kg/m^3) at the surface of a 35 m asteroid.
+ScalingImpact impactRz(double gravity) {
+  ScalingImpact i;
+  i.impactorRadius = 1.0;
+  i.impactorMass = 2785.0 * 4.0 / 3.0 * std::numbers::pi;
+  i.speed = 1e4;
+  i.targetDensity = 2680.0;
+  i.gravity = gravity;
+  return i;
+}
+
+const CraterScalingLaw& law(const char* name) {
+  const CraterScalingLaw* l = craterScalingClass(name);
+  EXPECT_NE(l, nullptr) << name;
+  return *l;
+}
+
+TEST(CraterScaling, StrengthRegimeIsTheClosedForm) {
+  // With no gravity: pi_V = K1 pi_3^(-3 mu / 2), V = pi_V m / rho.
+  const CraterScalingLaw& rock = law("hard_rock");
+  const ScalingImpact i = impactRz(0.0);
+  const ScaledCrater c = scaleCrater(rock, i);
+  const double pi3 = 6.9e6 / (2680.0 * 1e8);
+  EXPECT_NEAR(c.pi3, pi3, 1e-15 * pi3);
+  EXPECT_EQ(c.pi2, 0.0);
+  const double piV = 0.095 * std::pow(pi3, -1.5 * 0.55);
+  EXPECT_NEAR(c.piV / piV, 1.0, 1e-12);
+  // Worked by hand (python, the same inputs): pi_V 580.61, V 2527.3 m^3, D = 2 x 1.33 V^(1/3)
+  // 36.23 m, paraboloid depth 2 V / (pi R^2) 4.902 m.
+  EXPECT_NEAR(c.piV, 580.61, 0.01);
+  EXPECT_NEAR(c.volume, 2527.34, 0.01);
+  EXPECT_NEAR(2.0 * c.radius, 36.233, 1e-3);
+  EXPECT_NEAR(c.depth, 4.9023, 1e-4);
+  EXPECT_TRUE(c.strengthRegime);
+  // The bowl: pi R^2 d / 2 holds the volume.
+  EXPECT_NEAR(std::numbers::pi * c.radius * c.radius * c.depth / 2.0 / c.volume, 1.0, 1e-12);
+}
+
+TEST(CraterScaling, GravityRegimeIsTheClosedFormAndItsSizeEffect) {
+  // Dry sand has no strength: pi_V = K1 pi_2^(-3 mu / (2 + mu)).
+  const CraterScalingLaw& sand = law("dry_sand");
+  const double g = 9.81;
+  const ScaledCrater c = scaleCrater(sand, impactRz(g));
+  const double alpha = 3.0 * 0.41 / 2.41;
+  EXPECT_NEAR(c.piV / (0.132 * std::pow(g * 1.0 / 1e8, -alpha)), 1.0, 1e-12);
+  EXPECT_FALSE(c.strengthRegime);
+  // Similarity: an impactor twice as large (8x the mass) makes a crater 2^(3 - alpha) larger in
+  // volume under gravity (larger craters are less efficient), exactly 8x under strength.
+  ScalingImpact big = impactRz(g);
+  big.impactorRadius *= 2.0;
+  big.impactorMass *= 8.0;
+  EXPECT_NEAR(scaleCrater(sand, big).volume / c.volume, std::pow(2.0, 3.0 - alpha), 1e-12);
+  ScalingImpact bigRock = impactRz(0.0);
+  bigRock.impactorRadius *= 2.0;
+  bigRock.impactorMass *= 8.0;
+  EXPECT_NEAR(scaleCrater(law("hard_rock"), bigRock).volume /
+                  scaleCrater(law("hard_rock"), impactRz(0.0)).volume, 8.0, 1e-12);
+  // Strength regime in speed: V ~ U^(3 mu) (pi_V ~ (Y / rho U^2)^(-3 mu / 2)).
+  ScalingImpact fast = impactRz(0.0);
+  fast.speed *= 2.0;
+  EXPECT_NEAR(scaleCrater(law("hard_rock"), fast).volume /
+                  scaleCrater(law("hard_rock"), impactRz(0.0)).volume, std::pow(2.0, 3 * 0.55), 1e-12);
+}
+
+TEST(CraterScaling, TheRegimesJoinWhereTheirTermsAreEqual) {
+  // Dry soil (Y = 65 kPa): at the gravity where pi_2 equals pi_3^((2 + mu)/2) the crater is
+  // 2^(-alpha) of either regime's alone, and the regime flag turns there.
+  const CraterScalingLaw& soil = law("dry_soil");
+  const double mu = 0.41, alpha = 3 * mu / (2 + mu);
+  const double pi3 = 0.065e6 / (2680.0 * 1e8);
+  const double gJoin = std::pow(pi3, (2 + mu) / 2) * 1e8 / 1.0;
+  const ScaledCrater c = scaleCrater(soil, impactRz(gJoin));
+  EXPECT_NEAR(c.pi2 / std::pow(c.pi3, (2 + mu) / 2), 1.0, 1e-12);
+  EXPECT_NEAR(c.piV / (0.132 * std::pow(pi3, -1.5 * mu)), std::pow(2.0, -alpha), 1e-12);
+  EXPECT_TRUE(scaleCrater(soil, impactRz(0.9 * gJoin)).strengthRegime);
+  EXPECT_FALSE(scaleCrater(soil, impactRz(1.1 * gJoin)).strengthRegime);
+}
+
+TEST(CraterScaling, ClassesAgreeWithTheirSourcesAlphaColumn) {
+  // Holsapple's notes give alpha = 3 mu / (2 + mu) beside mu, rounded to two places: 0.65 for
+  // mu = 0.55 (water, wet soil, the rocks) and 0.51 for mu = 0.41 (dry sand and soil). A mu
+  // mistyped in the table breaks this.
+  const std::map<std::string, double> alpha = {{"water", 0.65},     {"dry_sand", 0.51},
+                                               {"dry_soil", 0.51},  {"wet_soil", 0.65},
+                                               {"soft_rock", 0.65}, {"hard_rock", 0.65}};
+  ASSERT_EQ(craterScalingClasses().size(), alpha.size());
+  for (const CraterScalingLaw& l : craterScalingClasses()) {
+    ASSERT_TRUE(alpha.count(l.name)) << l.name;
+    EXPECT_NEAR(3 * l.mu / (2 + l.mu), alpha.at(l.name), 0.005) << l.name;
+  }
+  // The strengths rise through the classes as the notes order them.
+  EXPECT_LT(law("dry_soil").strength, law("wet_soil").strength);
+  EXPECT_LT(law("wet_soil").strength, law("soft_rock").strength);
+  EXPECT_LT(law("soft_rock").strength, law("hard_rock").strength);
+  // The key reference (docs/scenes.md, from the scene schema in sim/) lists these classes.
+  int listed = 0;
+  for (const SceneTable& t : sceneTables())
+    if (t.path == "crater")
+      for (const config::KeySpec& k : t.keys)
+        if (k.name == "scaling") {
+          ++listed;
+          EXPECT_NE(std::string(k.doc).find(craterScalingClassNames()), std::string::npos) << k.doc;
+        }
+  EXPECT_EQ(listed, 1);
+}
+
+TEST(CraterScaling, RefusesWhatCannotBeScaled) {
+  // No strength and no gravity: nothing stops the crater.
+  EXPECT_THROW(scaleCrater(law("dry_sand"), impactRz(0.0)), std::invalid_argument);
+  ScalingImpact i = impactRz(0.0);
+  i.impactorMass = -1.0;
+  try {
+    scaleCrater(law("hard_rock"), i);
+    FAIL() << "a negative mass was scaled";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("impactor's mass"), std::string::npos) << e.what();
+  }
+  i = impactRz(std::nan(""));
+  EXPECT_THROW(scaleCrater(law("hard_rock"), i), std::invalid_argument);
+}
+
+std::string impactScene(const std::string& dimension, const std::string& extra) {
+  test::TinyImpact o;
+  o.dimension = dimension;
+  o.extra = extra;
+  return test::tinyImpactScene(o);
+}
+
+TEST(CraterScalingScene, TheSetupCarriesTheImpactAndTheSphereGravity) {
+  Scene rz = loadScene(std::string(EJECTA_SOURCE_DIR) + "/scenes/impact_rz.toml");
+  rz.crater.scaling = "hard_rock";
+  const auto s = craterSetupFromScene(rz);
+  ASSERT_TRUE(s && s->scaling);
+  const ScalingImpact& i = s->scaling->impact;
+  EXPECT_NEAR(i.impactorMass, 2785.0 * 4.0 / 3.0 * std::numbers::pi, 1e-9);
+  EXPECT_NEAR(i.impactorRadius, 1.0, 1e-12);
+  EXPECT_NEAR(i.speed, 1e4, 1e-9);
+  EXPECT_EQ(i.targetDensity, 2680.0);
+  // (4/3) pi G rho R for a 35 m granite sphere: 2.622e-5 m/s^2 (docs/impact.md: 2.6e-5).
+  EXPECT_NEAR(i.gravity, 2.6224e-5, 1e-8);
+  rz.crater.gravity = 1e-3;
+  EXPECT_EQ(craterSetupFromScene(rz)->scaling->impact.gravity, 1e-3);
+}
+
+void expectSceneError(const std::string& toml, const std::string& part) {
+  try {
+    const Scene s = parseScene(toml, "scaling.toml");
+    craterSetupFromScene(s);
+    FAIL() << "accepted: " << part;
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("scaling.toml"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+  }
+}
+
+TEST(CraterScalingScene, BadRequestsAreRefusedByName) {
+  expectSceneError(impactScene("rz", "[crater]\nscaling = \"granite\"\n"),
+                   "crater.scaling: no class 'granite' (the classes: water, dry_sand");
+  expectSceneError(impactScene("2d", "[crater]\nscaling = \"hard_rock\"\n"), "a trench");
+  expectSceneError(impactScene("rz", "[crater]\ngravity = \"1 m/s^2\"\n"), "give `scaling` too");
+  expectSceneError(impactScene("rz", "[crater]\nscaling = \"hard_rock\"\ngravity = \"-1 m/s^2\"\n"),
+                   "gravity");
+  // A box target: a plane, so no gravity unless given; dry sand then has nothing to stop it.
+  expectSceneError(impactScene("rz", "[crater]\nscaling = \"dry_sand\"\n"), "give [crater] gravity");
+}
+
+TEST(CraterScalingScene, TheRunsSummaryHoldsTheScaledCrater) {
+  const fs::path dir = fs::temp_directory_path() / ("ejecta_scaling_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const Scene scene = parseScene(
+      impactScene("rz", "[crater]\nscaling = \"dry_soil\"\ngravity = \"9.81 m/s^2\"\n"), "tiny.toml");
+  RunOptions options;
+  options.outDir = dir.string();
+  options.configure = [](const Scene& s, RunOptions& o) { addFieldOutputs(o, s); };
+  const RunOutcome r = runScene(scene, options);
+  ASSERT_TRUE(r.ok) << r.error;
+  std::ifstream in(dir / "summary.json");
+  const nlohmann::json x = nlohmann::json::parse(in)["extras"];
+  ASSERT_TRUE(x["crater_found"].get<bool>()) << x.dump(2);
+  EXPECT_EQ(x["crater_scaling_class"], "dry_soil");
+  const ScaledCrater c = scaleCrater(*craterScalingClass("dry_soil"),
+                                     craterSetupFromScene(scene)->scaling->impact);
+  EXPECT_EQ(x["crater_scaling_regime"], c.strengthRegime ? "strength" : "gravity");
+  EXPECT_DOUBLE_EQ(x["crater_scaled_volume_m3"].get<double>(), c.volume);
+  EXPECT_DOUBLE_EQ(x["crater_scaled_diameter_m"].get<double>(), 2 * c.radius);
+  EXPECT_DOUBLE_EQ(x["crater_scaled_depth_m"].get<double>(), c.depth);
+  EXPECT_DOUBLE_EQ(x["crater_volume_over_scaled"].get<double>(),
+                   x["crater_volume_m3"].get<double>() / c.volume);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace ejecta::fields
