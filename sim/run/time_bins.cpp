@@ -18,11 +18,7 @@ constexpr const char* kGradientField = "last:velocity_gradient";
 
 FieldSpec stateField(std::string name, std::string units, std::string description,
                      FieldOutput output, int components = 1) {
-  FieldSpec f;
-  f.name = std::move(name);
-  f.units = std::move(units);
-  f.description = std::move(description);
-  f.output = output;
+  FieldSpec f = scalarField(std::move(name), std::move(units), std::move(description), output);
   f.required = false;  // a run with global steps writes none of them
   f.components = components;
   return f;

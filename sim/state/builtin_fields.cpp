@@ -39,16 +39,6 @@ FieldStorage member(std::vector<std::int64_t> ParticleSet::*m) {
   return s;
 }
 
-// A scalar in /particles, /restart or nowhere.
-FieldSpec scalar(std::string name, std::string units, std::string description, FieldOutput output) {
-  FieldSpec f;
-  f.name = std::move(name);
-  f.units = std::move(units);
-  f.description = std::move(description);
-  f.output = output;
-  return f;
-}
-
 FieldSpec kicked(FieldSpec f, std::string rate) {
   f.evolution = Evolution::Kicked;
   f.rate = std::move(rate);
@@ -82,87 +72,87 @@ constexpr FieldOutput kRestart = FieldOutput::Restart;
 constexpr FieldOutput kNone = FieldOutput::None;
 
 std::vector<Field> coreFields() {
-  FieldSpec position = vector3(scalar("position", "m",
+  FieldSpec position = vector3(scalarField("position", "m",
                                       "particle position: 1D (x,0,0), 2D (x,y,0), RZ (r,z,0)", kParticles));
   position.evolution = Evolution::Drifted;
   position.rate = "velocity";
   position.spatial = true;
   position.writeDimensionOnly = true;
   position.halo = true;
-  FieldSpec velocity = halo(kicked(vector3(scalar("velocity", "m/s",
+  FieldSpec velocity = halo(kicked(vector3(scalarField("velocity", "m/s",
                                                   "particle velocity; RZ: (v_r, v_z, v_phi)", kParticles)),
                                    "acceleration"));
   velocity.spatial = true;
-  FieldSpec omega = halo(scalar("omega", "1", "grad-h correction factor", kNone));
+  FieldSpec omega = halo(scalarField("omega", "1", "grad-h correction factor", kNone));
   omega.fill = 1.0;  // 1 when h is not tied to the density
-  FieldSpec material = halo(scalar("material", "1", "index into the run's material table", kParticles));
+  FieldSpec material = halo(scalarField("material", "1", "index into the run's material table", kParticles));
   material.type = FieldType::Int32;
-  FieldSpec id = halo(scalar("id", "1", "stable particle identity", kParticles));
+  FieldSpec id = halo(scalarField("id", "1", "stable particle identity", kParticles));
   id.type = FieldType::Int64;
-  FieldSpec temperature = gridded(scalar("temperature", "K", "temperature T0 + u / c_v of the material", kParticles));
+  FieldSpec temperature = gridded(scalarField("temperature", "K", "temperature T0 + u / c_v of the material", kParticles));
   temperature.required = false;  // snapshots written before the thermal model lack it
   return {
       {position, member(&ParticleSet::x)},
       {velocity, member(&ParticleSet::v)},
-      {halo(gridded(kicked(scalar("density", "kg/m^3", "mass density", kParticles), "drho_dt"))),
+      {halo(gridded(kicked(scalarField("density", "kg/m^3", "mass density", kParticles), "drho_dt"))),
        member(&ParticleSet::rho)},
       {temperature, member(&ParticleSet::temperature)},
-      {halo(gridded(scalar("pressure", "Pa", "pressure from the equation of state", kParticles))),
+      {halo(gridded(scalarField("pressure", "Pa", "pressure from the equation of state", kParticles))),
        member(&ParticleSet::P)},
-      {halo(gridded(kicked(scalar("internal_energy", "J/kg", "specific internal energy", kParticles),
+      {halo(gridded(kicked(scalarField("internal_energy", "J/kg", "specific internal energy", kParticles),
                                   "du_dt"))),
        member(&ParticleSet::u)},
-      {halo(gridded(kicked(scalar("smoothing_length", "m", "SPH smoothing length h", kParticles),
+      {halo(gridded(kicked(scalarField("smoothing_length", "m", "SPH smoothing length h", kParticles),
                                   "dh_dt"))),
        member(&ParticleSet::h)},
-      {halo(gridded(scalar("sound_speed", "m/s",
+      {halo(gridded(scalarField("sound_speed", "m/s",
                                   "signal speed: the equation of state's sound speed; for materials with "
                                   "strength the longitudinal speed sqrt(c^2 + 4G/(3 rho))",
                                   kParticles))),
        member(&ParticleSet::cs)},
-      derived(gridded(scalar("speed", "m/s", "magnitude of the velocity", kNone)),
+      derived(gridded(scalarField("speed", "m/s", "magnitude of the velocity", kNone)),
               [](const ParticleSet& p, std::size_t i) {
                 return std::sqrt(p.v[0][i] * p.v[0][i] + p.v[1][i] * p.v[1][i] + p.v[2][i] * p.v[2][i]);
               }),
-      derived(gridded(scalar("velocity_x", "m/s", "velocity, x component (RZ: radial)", kNone)),
+      derived(gridded(scalarField("velocity_x", "m/s", "velocity, x component (RZ: radial)", kNone)),
               [](const ParticleSet& p, std::size_t i) { return p.v[0][i]; }),
-      derived(gridded(scalar("velocity_y", "m/s", "velocity, y component (RZ: axial)", kNone)),
+      derived(gridded(scalarField("velocity_y", "m/s", "velocity, y component (RZ: axial)", kNone)),
               [](const ParticleSet& p, std::size_t i) { return p.v[1][i]; }),
-      derived(gridded(scalar("velocity_z", "m/s", "velocity, z component", kNone)),
+      derived(gridded(scalarField("velocity_z", "m/s", "velocity, z component", kNone)),
               [](const ParticleSet& p, std::size_t i) { return p.v[2][i]; }),
-      {halo(scalar("mass", "kg", "particle mass; RZ: whole ring; 2D planar: per metre of depth",
+      {halo(scalarField("mass", "kg", "particle mass; RZ: whole ring; 2D planar: per metre of depth",
                           kParticles)),
        member(&ParticleSet::mass)},
       {material, member(&ParticleSet::material)},
       {id, member(&ParticleSet::id)},
-      {vector3(scalar("acceleration", "m/s^2", "acceleration of the last force evaluation", kRestart)),
+      {vector3(scalarField("acceleration", "m/s^2", "acceleration of the last force evaluation", kRestart)),
        member(&ParticleSet::a)},
-      {scalar("du_dt", "J/kg/s", "rate of change of specific internal energy", kRestart),
+      {scalarField("du_dt", "J/kg/s", "rate of change of specific internal energy", kRestart),
        member(&ParticleSet::du_dt)},
-      {scalar("drho_dt", "kg/m^3/s", "rate of change of density (continuity)", kRestart),
+      {scalarField("drho_dt", "kg/m^3/s", "rate of change of density (continuity)", kRestart),
        member(&ParticleSet::drho_dt)},
-      {scalar("dh_dt", "m/s", "rate of change of smoothing length", kRestart), member(&ParticleSet::dh_dt)},
+      {scalarField("dh_dt", "m/s", "rate of change of smoothing length", kRestart), member(&ParticleSet::dh_dt)},
       {omega, member(&ParticleSet::omega)},
-      {halo(scalar("divv", "1/s", "velocity divergence estimate", kNone)), member(&ParticleSet::divv)},
-      {halo(scalar("curlv", "1/s", "|curl v| estimate", kNone)), member(&ParticleSet::curlv)},
-      {halo(scalar("area_density", "kg/m^2", "RZ: 2 pi r rho, the 2D summation", kNone)),
+      {halo(scalarField("divv", "1/s", "velocity divergence estimate", kNone)), member(&ParticleSet::divv)},
+      {halo(scalarField("curlv", "1/s", "|curl v| estimate", kNone)), member(&ParticleSet::curlv)},
+      {halo(scalarField("area_density", "kg/m^2", "RZ: 2 pi r rho, the 2D summation", kNone)),
        member(&ParticleSet::areaDensity)},
   };
 }
 
 std::vector<Field> fractureFields() {
-  FieldSpec crack = halo(kicked(scalar("crack", "1", "crack fraction D^(1/3)", kRestart), "dcrack_dt"));
+  FieldSpec crack = halo(kicked(scalarField("crack", "1", "crack fraction D^(1/3)", kRestart), "dcrack_dt"));
   crack.limit = KickLimit::Cap;
   return {
-      derived(gridded(scalar("damage", "1", "damage D in [0, 1] (1: no tension, no shear)", kParticles)),
+      derived(gridded(scalarField("damage", "1", "damage D in [0, 1] (1: no tension, no shear)", kParticles)),
               [](const ParticleSet& p, std::size_t i) { return p.damage(i); }),
       {crack, member(&ParticleSet::crack)},
-      {scalar("dcrack_dt", "1/s", "rate of the crack fraction", kRestart), member(&ParticleSet::dcrack_dt)},
+      {scalarField("dcrack_dt", "1/s", "rate of the crack fraction", kRestart), member(&ParticleSet::dcrack_dt)},
   };
 }
 
 std::vector<Field> strengthFields(int components) {
-  FieldSpec stress = halo(kicked(scalar("stress", "Pa",
+  FieldSpec stress = halo(kicked(scalarField("stress", "Pa",
                                         components == 6 ? "deviatoric stress: xx, yy, zz, xy, xz, yz"
                                                         : "deviatoric stress: xx, yy, zz, xy (RZ: rr, zz, "
                                                           "theta-theta, rz)",
@@ -170,32 +160,32 @@ std::vector<Field> strengthFields(int components) {
                                  "dstress_dt"));
   stress.components = components;
   stress.parity = MirrorParity::SymmetricTensor;
-  FieldSpec rate = scalar("dstress_dt", "Pa/s", "rate of the deviatoric stress", kRestart);
+  FieldSpec rate = scalarField("dstress_dt", "Pa/s", "rate of the deviatoric stress", kRestart);
   rate.components = components;
   return {
       {stress, member(&ParticleSet::stress)},
-      {gridded(scalar("plastic_strain", "1", "equivalent plastic strain", kParticles)),
+      {gridded(scalarField("plastic_strain", "1", "equivalent plastic strain", kParticles)),
        member(&ParticleSet::plasticStrain)},
       {rate, member(&ParticleSet::dstress_dt)},
-      {kicked(scalar("total_strain", "1", "equivalent total strain", kRestart), "strain_rate"),
+      {kicked(scalarField("total_strain", "1", "equivalent total strain", kRestart), "strain_rate"),
        member(&ParticleSet::totalStrain)},
-      {scalar("strain_rate", "1/s", "equivalent strain rate", kRestart), member(&ParticleSet::strainRate)},
+      {scalarField("strain_rate", "1/s", "equivalent strain rate", kRestart), member(&ParticleSet::strainRate)},
   };
 }
 
 std::vector<Field> burnFields() {
   return {
-      {gridded(scalar("burn_fraction", "1",
+      {gridded(scalarField("burn_fraction", "1",
                       "programmed-burn fraction F in [0, 1] (the factor on the JWL pressure)", kParticles),
                1.0),  // nothing burns: every particle is burnt
        member(&ParticleSet::burnFraction)},
-      {scalar("lighting_time", "s", "programmed-burn lighting time (-inf: not an explosive)", kRestart),
+      {scalarField("lighting_time", "s", "programmed-burn lighting time (-inf: not an explosive)", kRestart),
        member(&ParticleSet::lightingTime)},
   };
 }
 
 std::vector<Field> viscositySwitchFields() {
-  FieldSpec alpha = kicked(scalar("viscosity_alpha", "1",
+  FieldSpec alpha = kicked(scalarField("viscosity_alpha", "1",
                                   "artificial-viscosity coefficient alpha of the Morris-Monaghan switch",
                                   kParticles),
                            "dalpha_dt");
@@ -203,7 +193,7 @@ std::vector<Field> viscositySwitchFields() {
   alpha.halo = true;
   return {
       {alpha, member(&ParticleSet::alpha)},
-      {scalar("dalpha_dt", "1/s", "rate of the viscosity switch's alpha", kRestart),
+      {scalarField("dalpha_dt", "1/s", "rate of the viscosity switch's alpha", kRestart),
        member(&ParticleSet::dalpha_dt)},
   };
 }

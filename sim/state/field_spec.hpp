@@ -7,6 +7,7 @@
 // all iterate over these declarations (docs/design.md, "Fields declared once").
 #include <cstddef>
 #include <string>
+#include <utility>
 
 namespace ejecta {
 
@@ -61,5 +62,17 @@ struct FieldSpec {
   // gridded (damage = crack^3). Never read back, never evolved.
   double (*derive)(const ParticleSet&, std::size_t) = nullptr;
 };
+
+// Where every declaration starts: a one-component Float64 field stored where `output` says; the
+// declaring code then sets what differs (evolution, grids, halos, components).
+inline FieldSpec scalarField(std::string name, std::string units, std::string description,
+                             FieldOutput output) {
+  FieldSpec f;
+  f.name = std::move(name);
+  f.units = std::move(units);
+  f.description = std::move(description);
+  f.output = output;
+  return f;
+}
 
 }  // namespace ejecta

@@ -4,11 +4,7 @@ namespace ejecta {
 
 void PhaseFractionsPackage::registerFields(ParticleSet& p) {
   auto fraction = [](const char* name, const char* description) {
-    FieldSpec f;
-    f.name = name;
-    f.units = "1";
-    f.description = description;
-    f.output = FieldOutput::Particles;
+    FieldSpec f = scalarField(name, "1", description, FieldOutput::Particles);
     f.grid = true;
     return f;
   };

@@ -24,11 +24,9 @@ PorosityPackage::PorosityPackage(const MaterialTable& materials, DensityMethod d
 
 void PorosityPackage::registerFields(ParticleSet& p) {
   const bool carried = p.field(kDistention) != nullptr;  // read back from a snapshot
-  FieldSpec alpha;
-  alpha.name = kDistention;
-  alpha.units = "1";
-  alpha.description = "distention alpha = matrix density / bulk density (1: no pores)";
-  alpha.output = FieldOutput::Particles;
+  FieldSpec alpha = scalarField(kDistention, "1",
+                                "distention alpha = matrix density / bulk density (1: no pores)",
+                                FieldOutput::Particles);
   alpha.grid = true;
   alpha.absent = 1.0;
   alpha.fill = 1.0;
@@ -37,34 +35,19 @@ void PorosityPackage::registerFields(ParticleSet& p) {
   alpha.limit = KickLimit::Clamp;
   alpha.lo = 1.0;
   alpha.hi = largestInitialDistention_;
-  FieldSpec rate;
-  rate.name = kDistentionRate;
-  rate.units = "1/s";
-  rate.description = "rate of the distention";
-  rate.output = FieldOutput::Restart;
   p.declare(alpha);
-  p.declare(rate);
+  p.declare(scalarField(kDistentionRate, "1/s", "rate of the distention", FieldOutput::Restart));
   if (anyEpsilonAlpha_) {
-    FieldSpec strain;
-    strain.name = kStrain;
-    strain.units = "1";
-    strain.description = "volumetric strain ln(V/V0) less the matrix's thermal part (epsilon-alpha)";
-    strain.output = FieldOutput::Restart;
+    FieldSpec strain = scalarField(
+        kStrain, "1", "volumetric strain ln(V/V0) less the matrix's thermal part (epsilon-alpha)",
+        FieldOutput::Restart);
     strain.evolution = Evolution::Kicked;
     strain.rate = kStrainRate;
-    FieldSpec strainRate;
-    strainRate.name = kStrainRate;
-    strainRate.units = "1/s";
-    strainRate.description = "rate of the volumetric strain";
-    strainRate.output = FieldOutput::Restart;
-    FieldSpec least;
-    least.name = kLeastStrain;
-    least.units = "1";
-    least.description = "the most compressive volumetric strain reached (epsilon-alpha)";
-    least.output = FieldOutput::Restart;
     p.declare(strain);
-    p.declare(strainRate);
-    p.declare(least);
+    p.declare(scalarField(kStrainRate, "1/s", "rate of the volumetric strain", FieldOutput::Restart));
+    p.declare(scalarField(kLeastStrain, "1",
+                          "the most compressive volumetric strain reached (epsilon-alpha)",
+                          FieldOutput::Restart));
   }
   if (carried) return;
   std::vector<double>& values = p.column(*p.field(kDistention), 0);

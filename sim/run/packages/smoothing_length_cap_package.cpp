@@ -15,12 +15,10 @@ SmoothingLengthCapPackage::SmoothingLengthCapPackage(const SphOptions& sph, Geom
 
 void SmoothingLengthCapPackage::registerFields(ParticleSet& p) {
   const bool carried = p.field(kCap) != nullptr;  // read back from a snapshot
-  FieldSpec cap;
-  cap.name = kCap;
-  cap.units = "m";
-  cap.description = "largest smoothing length the particle may take (sph.h_max_factor x its first h)";
-  cap.output = FieldOutput::Restart;
-  p.declare(cap);
+  p.declare(scalarField(kCap, "m",
+                        "largest smoothing length the particle may take (sph.h_max_factor x its "
+                        "first h)",
+                        FieldOutput::Restart));
   if (carried) return;
   std::vector<double>& values = p.column(*p.field(kCap), 0);
   for (std::size_t i = 0; i < p.size(); ++i) values[i] = factor_ * p.h[i];
