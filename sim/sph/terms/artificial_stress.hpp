@@ -22,28 +22,27 @@ namespace ejecta {
 template <template <int> class K, int D, bool RZ>
 class ArtificialStress {
  public:
-  // R of particles [0, end); the rest (halos still in flight) come by refresh.
-  ArtificialStress(const ParticleSet& p, const HydroWorkspace& ws, std::size_t end)
+  // R of the particles `which`; the rest (halos still in flight) come by refresh.
+  ArtificialStress(const ParticleSet& p, const HydroWorkspace& ws, TermParticles which)
       : epsilon_(ws.artificialStress),
         exponent_(ws.sph.artificialStressExponent),
         integerExponent_(static_cast<int>(exponent_)) {
     integerPower_ = integerExponent_ == exponent_ && integerExponent_ <= 16;
     double dwRef;
     K<D>::shape(1.0 / ws.sph.eta, wRef_, dwRef);
-    refresh(p, ws, 0, end);
+    refresh(p, ws, which);
   }
 
-  // Computes R of particles [begin, end) (halos whose values arrived).
-  void refresh(const ParticleSet& p, const HydroWorkspace& ws, std::size_t begin, std::size_t end) {
+  // Computes R of the particles `which` (halos whose values arrived).
+  void refresh(const ParticleSet& p, const HydroWorkspace& ws, TermParticles which) {
     if (!enabled()) return;
     for (int a = 0; a < D; ++a)
-      for (int b = a; b < D; ++b) {
-        std::vector<double>& r = R_[kSymIndex[a][b]];
-        r.resize(p.size());
-        std::fill(r.begin() + static_cast<std::ptrdiff_t>(begin), r.begin() + static_cast<std::ptrdiff_t>(end), 0.0);
-      }
+      for (int b = a; b < D; ++b) R_[kSymIndex[a][b]].resize(p.size());
 #pragma omp parallel for schedule(static)
-    for (std::size_t i = begin; i < end; ++i) {
+    for (std::size_t k = 0; k < which.count(); ++k) {
+      const std::size_t i = which[k];
+      for (int a = 0; a < D; ++a)
+        for (int b = a; b < D; ++b) R_[kSymIndex[a][b]][i] = 0.0;  // no tension: no R
       if (!(ws.shearModulus[p.material[i]] > 0.0)) continue;  // fluids: no tensile instability
       const double sigmaI = RZ ? p.areaDensity[i] : p.rho[i];
       principalTension(actingStress(p, ws, i), epsilon_ / (p.rho[i] * sigmaI), i);

@@ -21,8 +21,8 @@ namespace ejecta {
 template <int D>
 class MonaghanViscosity {
  public:
-  // Holds what it needs of particles [0, end); the rest (halos still in flight) come by refresh.
-  MonaghanViscosity(const ParticleSet& p, const HydroWorkspace& ws, std::size_t end)
+  // Holds what it needs of the particles `which`; the rest (halos still in flight) come by refresh.
+  MonaghanViscosity(const ParticleSet& p, const HydroWorkspace& ws, TermParticles which)
       : cs_(p.cs.data()),
         alpha_(ws.sph.alpha),
         beta_(ws.sph.beta),
@@ -35,17 +35,18 @@ class MonaghanViscosity {
         throw std::logic_error("viscosity switch on but the particles carry no alpha");
       switchAlpha_ = p.alpha.data();  // ghosts carry their source's alpha (a halo field)
     }
-    refresh(p, 0, end);
+    refresh(p, which);
     if (reconstruct_) gradient_ = ws.velocityGradient.data();
   }
 
-  // Computes what it holds of particles [begin, end) (halos whose values arrived).
-  void refresh(const ParticleSet& p, std::size_t begin, std::size_t end) {
+  // Computes what it holds of the particles `which` (halos whose values arrived).
+  void refresh(const ParticleSet& p, TermParticles which) {
     if (!balsara_) return;
     // Real and ghost particles share their source's div v and curl v.
     shearFactor_.resize(p.size());
 #pragma omp parallel for schedule(static)
-    for (std::size_t i = begin; i < end; ++i) {
+    for (std::size_t k = 0; k < which.count(); ++k) {
+      const std::size_t i = which[k];
       const double div = std::abs(p.divv[i]);
       shearFactor_[i] = div / (div + p.curlv[i] + 1e-4 * p.cs[i] / p.h[i] + 1e-300);
     }

@@ -20,6 +20,16 @@ struct Pair {
   double sigmaIJ = 0.0;            // mean of sigma_i and sigma_j
 };
 
+// The particles whose per-particle values a pass's terms compute (each term's refresh): indices
+// [begin, end) themselves, or entries [begin, end) of an ascending list (individual time steps:
+// only the active particles and their partners are read, sim/sph/hydro_force.cpp).
+struct TermParticles {
+  const std::size_t* list = nullptr;  // nullptr: the indices themselves
+  std::size_t begin = 0, end = 0;
+  std::size_t count() const { return end - begin; }
+  std::size_t operator[](std::size_t k) const { return list ? list[begin + k] : begin + k; }
+};
+
 // The state of particle i the pair terms read, loaded once per particle.
 struct PairOrigin {
   std::size_t i = 0;

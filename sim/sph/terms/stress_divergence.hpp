@@ -10,6 +10,7 @@
 #include "sim/solid/strength.hpp"
 #include "sim/sph/hydro_workspace.hpp"
 #include "sim/sph/sph_options.hpp"
+#include "sim/sph/terms/pair.hpp"
 #include "sim/state/particles.hpp"
 #include "sim/state/tensor.hpp"
 
@@ -34,21 +35,23 @@ struct StressDivergence {
   std::array<std::vector<double>, 6> T;  // sigma scaled for the momentum form, in-plane only
   std::vector<double> hoop;              // RZ: effective sigma_theta_theta [Pa]
 
-  // T of particles [0, end); the rest (halos still in flight) come by refresh.
-  StressDivergence(const ParticleSet& p, const HydroWorkspace& ws, MomentumForm form, std::size_t end)
+  // T of the particles `which`; the rest (halos still in flight) come by refresh.
+  StressDivergence(const ParticleSet& p, const HydroWorkspace& ws, MomentumForm form,
+                   TermParticles which)
       : form_(form) {
-    refresh(p, ws, 0, end);
+    refresh(p, ws, which);
   }
 
-  // Computes T and the hoop stress of particles [begin, end) (halos whose values arrived).
-  void refresh(const ParticleSet& p, const HydroWorkspace& ws, std::size_t begin, std::size_t end) {
+  // Computes T and the hoop stress of the particles `which` (halos whose values arrived).
+  void refresh(const ParticleSet& p, const HydroWorkspace& ws, TermParticles which) {
     const MomentumForm form = form_;
     const std::size_t n = p.size();
     for (int a = 0; a < D; ++a)
       for (int b = a; b < D; ++b) T[kSymIndex[a][b]].resize(n);
     if (RZ) hoop.resize(n);
 #pragma omp parallel for schedule(static)
-    for (std::size_t i = begin; i < end; ++i) {
+    for (std::size_t k = 0; k < which.count(); ++k) {
+      const std::size_t i = which[k];
       const double sigmaI = RZ ? p.areaDensity[i] : p.rho[i];
       const double scale = form == MomentumForm::Lagrangian
                                ? 1.0 / (p.omega[i] * p.rho[i] * sigmaI)
