@@ -11,6 +11,7 @@
 #include "core/units.hpp"
 #include "fields/crater.hpp"
 #include "fields/crater_setup.hpp"
+#include "fields/crater_summary.hpp"
 #include "fields/grid_set.hpp"
 #include "fields/measure_crater.hpp"
 #include "fields/vdb_grids.hpp"
@@ -51,6 +52,14 @@ nlohmann::ordered_json toJson(const fields::CraterMetrics& m, const fields::Crat
   j["along_track_diameter_m"] = m.alongTrackDiameter;
   j["cross_track_diameter_m"] = m.crossTrackDiameter;
   j["elongation"] = m.elongation;
+  if (setup.scaling) {  // [crater] scaling (docs/crater.md)
+    const fields::ScaledCrater k = fields::scaleCrater(setup.scaling->law, setup.scaling->impact);
+    j["scaling"] = {{"class", setup.scaling->law.name},
+                    {"regime", k.strengthRegime ? "strength" : "gravity"},
+                    {"volume_m3", k.volume},
+                    {"diameter_m", 2.0 * k.radius},
+                    {"depth_m", k.depth}};
+  }
   nlohmann::ordered_json profile = nlohmann::ordered_json::array();
   for (const fields::CraterProfileBin& b : m.profile)
     profile.push_back({b.distance, b.depthMean, b.depthMin, b.depthMax});
@@ -112,10 +121,8 @@ int craterCommand(const CraterArgs& args) {
   if (setup.scaling) {
     // The scene's [crater] scaling (fields/crater_scaling.hpp).
     const fields::ScaledCrater k = fields::scaleCrater(setup.scaling->law, setup.scaling->impact);
-    std::printf("  pi-group scaling (%s, %s regime): volume %.4g m^3, diameter %.3g m, depth %.3g m; "
-                "this crater's volume is %.3g of it\n",
-                setup.scaling->law.name.c_str(), k.strengthRegime ? "strength" : "gravity", k.volume,
-                2.0 * k.radius, k.depth, metrics.volume / k.volume);
+    std::printf("  %s\n",
+                fields::describeScaledCrater(setup.scaling->law.name, k, metrics.volume).c_str());
   }
   if (!metrics.note.empty()) std::printf("  note: %s\n", metrics.note.c_str());
   return 0;

@@ -111,15 +111,13 @@ void printSummary(const RunOutcome& r, const HookResults& hooks, const std::stri
         std::printf("  crater %s: %+.1f%% in %s over the last fifth of the run (since t = %.3g s)\n",
                     c->growth->growing ? "still growing" : "has stopped growing",
                     100.0 * c->growth->change, c->planar ? "area" : "volume", c->growth->since);
-      if (c->scaled)
-        std::printf("  pi-group scaling (%s, %s regime): volume %.4g m^3, diameter %.3g m, depth "
-                    "%.3g m; the run's volume is %.3g of it\n",
-                    c->scalingClass.c_str(), c->scaled->strengthRegime ? "strength" : "gravity",
-                    c->scaled->volume, 2.0 * c->scaled->radius, c->scaled->depth,
-                    c->volume / c->scaled->volume);
     }
     else if (!c->note.empty())
       std::printf("  crater: none measured (%s)\n", c->note.c_str());
+    if (c->scaled)
+      std::printf("  %s\n", fields::describeScaledCrater(c->scalingClass, *c->scaled,
+                                                        c->found ? std::optional<double>(c->volume)
+                                                                 : std::nullopt).c_str());
   }
   // The Whipple shield's verdict (fields/shield_outputs.hpp) and the fragments.
   if (const auto& sh = hooks.shield) {

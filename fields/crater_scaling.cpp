@@ -1,6 +1,7 @@
 #include "fields/crater_scaling.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <stdexcept>
 
@@ -39,10 +40,11 @@ std::string craterScalingClassNames() {
 namespace {
 
 void requirePositive(double value, const char* what, bool zeroAllowed = false) {
-  if (!std::isfinite(value) || value < 0.0 || (!zeroAllowed && value == 0.0))
-    throw std::invalid_argument(std::string("crater scaling: the ") + what + " is " +
-                                std::to_string(value) +
-                                (zeroAllowed ? " (must be finite and >= 0)" : " (must be finite and > 0)"));
+  if (std::isfinite(value) && value >= 0.0 && (zeroAllowed || value > 0.0)) return;
+  char text[64];
+  std::snprintf(text, sizeof text, "%g", value);
+  throw std::invalid_argument(std::string("the ") + what + " is " + text +
+                              (zeroAllowed ? " (must be finite and >= 0)" : " (must be finite and > 0)"));
 }
 
 }  // namespace
@@ -54,7 +56,7 @@ ScaledCrater scaleCrater(const CraterScalingLaw& law, const ScalingImpact& impac
   requirePositive(impact.targetDensity, "target's density");
   requirePositive(impact.gravity, "surface gravity", true);
   if (impact.gravity == 0.0 && law.strength == 0.0)
-    throw std::invalid_argument("crater scaling: class '" + law.name +
+    throw std::invalid_argument("class '" + law.name +
                                 "' has no strength, so only gravity stops its crater; the "
                                 "surface gravity is 0");
   ScaledCrater c;

@@ -35,7 +35,7 @@ std::string craterScalingClassNames();
 struct ScalingImpact {
   double impactorMass = 0.0;    // m [kg]
   double impactorRadius = 0.0;  // a [m] (a non-spherical impactor: the sphere of its volume)
-  double speed = 0.0;           // U [m/s], the normal impact's; the run's full speed otherwise
+  double speed = 0.0;           // U [m/s]: the full speed (an oblique impact scaled as normal)
   double targetDensity = 0.0;   // rho [kg/m^3]
   double gravity = 0.0;         // g [m/s^2] at the target's surface
 };
@@ -49,7 +49,7 @@ struct ScaledCrater {
 };
 
 // Throws std::invalid_argument when an input is not positive and finite (gravity may be 0 where
-// the strength is not), naming it.
+// the strength is not), naming it (the message has no prefix: the caller says where).
 ScaledCrater scaleCrater(const CraterScalingLaw& law, const ScalingImpact& impact);
 
 }  // namespace ejecta::fields

@@ -55,7 +55,13 @@ void addScaling(const Scene& scene, const BodySpec& impactor, CraterSetup& setup
   if (setup.planar)
     throw SceneError(where + "pi-group scaling is for craters in 3D or RZ; a 2D planar run's "
                      "crater is a trench");
-  const double volume = impactorVolume(impactor.shape, scene.geometry);
+  const ShapeSpec& shape = impactor.shape;
+  if (scene.geometry == Geometry::Axisymmetric &&
+      (shape.kind == ShapeKind::Sphere || shape.kind == ShapeKind::Shell) &&
+      std::abs(shape.center[0]) > 1e-9 * shape.radius)
+    throw SceneError(where + "the impactor '" + impactor.name + "' is off the axis: in RZ it is a "
+                     "ring, not a sphere");
+  const double volume = impactorVolume(shape, scene.geometry);
   if (!(volume > 0.0))
     throw SceneError(where + "the impactor '" + impactor.name + "' has no finite volume");
   ScalingImpact impact;
@@ -75,7 +81,8 @@ void addScaling(const Scene& scene, const BodySpec& impactor, CraterSetup& setup
   try {
     scaleCrater(*law, impact);  // refused now, not after the run
   } catch (const std::invalid_argument& e) {
-    throw SceneError(where + e.what() + (scene.crater.gravity ? "" : "; give [crater] gravity"));
+    throw SceneError(where + e.what() +
+                     (impact.gravity == 0.0 && !scene.crater.gravity ? "; give [crater] gravity" : ""));
   }
   setup.scaling = CraterScaling{*law, impact};
 }

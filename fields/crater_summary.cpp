@@ -1,5 +1,7 @@
 #include "fields/crater_summary.hpp"
 
+#include <cstdio>
+
 namespace ejecta::fields {
 
 CraterSummary craterSummary(const CraterMetrics& m, bool planar) {
@@ -17,6 +19,21 @@ CraterSummary craterSummary(const CraterMetrics& m, bool planar) {
   return c;
 }
 
+std::string describeScaledCrater(const std::string& scalingClass, const ScaledCrater& k,
+                                 std::optional<double> measuredVolume) {
+  char line[320];
+  std::snprintf(line, sizeof line,
+                "pi-group scaling (%s, %s regime): volume %.4g m^3, diameter %.3g m, depth %.3g m",
+                scalingClass.c_str(), k.strengthRegime ? "strength" : "gravity", k.volume,
+                2.0 * k.radius, k.depth);
+  std::string text = line;
+  if (measuredVolume) {
+    std::snprintf(line, sizeof line, "; the crater's volume is %.3g of it", *measuredVolume / k.volume);
+    text += line;
+  }
+  return text;
+}
+
 CraterSummary craterFailure(const std::string& why) {
   CraterSummary c;
   c.note = why;
@@ -30,6 +47,15 @@ void addToSummary(const CraterSummary& c, RunSummary& s) {
     s.extras.push_back({"crater_still_growing", c.growth->growing});
   }
   if (!c.note.empty()) s.extras.push_back({"crater_note", c.note});
+  if (c.scaled) {  // also when no crater was found: the prediction stands alone then
+    const ScaledCrater& k = *c.scaled;
+    s.extras.push_back({"crater_scaling_class", c.scalingClass});
+    s.extras.push_back({"crater_scaling_regime", std::string(k.strengthRegime ? "strength" : "gravity")});
+    s.extras.push_back({"crater_scaled_volume_m3", k.volume});
+    s.extras.push_back({"crater_scaled_diameter_m", 2.0 * k.radius});
+    s.extras.push_back({"crater_scaled_depth_m", k.depth});
+    if (c.found) s.extras.push_back({"crater_volume_over_scaled", c.volume / k.volume});
+  }
   if (!c.found) return;
   s.extras.push_back({"crater_depth_m", c.depth});
   s.extras.push_back({"crater_apparent_diameter_m", c.apparentDiameter});
@@ -42,15 +68,6 @@ void addToSummary(const CraterSummary& c, RunSummary& s) {
     s.extras.push_back({"crater_volume_m3", c.volume});
     s.extras.push_back({"crater_excavated_mass_kg", c.excavatedMass});
     s.extras.push_back({"crater_elongation", c.elongation});
-  }
-  if (c.scaled) {
-    const ScaledCrater& k = *c.scaled;
-    s.extras.push_back({"crater_scaling_class", c.scalingClass});
-    s.extras.push_back({"crater_scaling_regime", std::string(k.strengthRegime ? "strength" : "gravity")});
-    s.extras.push_back({"crater_scaled_volume_m3", k.volume});
-    s.extras.push_back({"crater_scaled_diameter_m", 2.0 * k.radius});
-    s.extras.push_back({"crater_scaled_depth_m", k.depth});
-    if (c.found && !c.planar) s.extras.push_back({"crater_volume_over_scaled", c.volume / k.volume});
   }
 }
 

@@ -28,6 +28,10 @@ struct CraterSummary {
 };
 
 CraterSummary craterSummary(const CraterMetrics& metrics, bool planar);
+// The line `ejecta run` and `ejecta crater` print for [crater] scaling, with the measured
+// crater's volume over the scaled one when there is a crater.
+std::string describeScaledCrater(const std::string& scalingClass, const ScaledCrater& scaled,
+                                 std::optional<double> measuredVolume);
 // A measurement that failed: no crater, and why.
 CraterSummary craterFailure(const std::string& why);
 

@@ -276,12 +276,10 @@ void readPackageFields(hid_t file, ParticleSet& p, std::size_t n, RowRange range
       const Hid type = checked(H5Dget_type(dset.get()), H5Tclose, "cannot get type of '" + path + "'");
       const std::vector<hsize_t> dims = datasetShape(dset.get(), path);
       if (H5Tget_class(type.get()) != H5T_FLOAT || dims.empty() || dims.size() > 2 || dims[0] != n) continue;
-      FieldSpec spec;
-      spec.name = name;
-      spec.units = readStringAttribute(dset.get(), "units", "'" + path + "'");
-      spec.description = readStringAttribute(dset.get(), "description", "'" + path + "'");
+      FieldSpec spec = scalarField(name, readStringAttribute(dset.get(), "units", "'" + path + "'"),
+                                   readStringAttribute(dset.get(), "description", "'" + path + "'"),
+                                   output);
       spec.components = dims.size() == 2 ? static_cast<int>(dims[1]) : 1;
-      spec.output = output;
       p.declare(spec);
       readField(file, path, p, *p.field(name), n, range);
     }

@@ -89,6 +89,8 @@ void readCrater(const TableReader& root, Scene& scene) {
   if (c.gravity)
     r.check(*c.gravity >= 0.0, "gravity", nonNegativeMessage(*c.gravity, Dimension::Acceleration));
   r.check(!c.gravity || !c.scaling.empty(), "gravity", "is for the crater scaling: give `scaling` too");
+  r.check(c.enabled || c.scaling.empty(), "scaling", "sets the measured crater beside the scaled "
+                                                     "one: it needs enabled = true");
 }
 
 namespace {

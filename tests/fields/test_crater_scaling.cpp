@@ -14,6 +14,7 @@
 
 #include "fields/crater_scaling.hpp"
 #include "fields/crater_setup.hpp"
+#include "fields/crater_summary.hpp"
 #include "fields/run_outputs.hpp"
 #include "sim/run/run.hpp"
 #include "sim/setup/scene.hpp"
@@ -39,7 +40,7 @@ ScalingImpact impactRz(double gravity) {
 
 const CraterScalingLaw& law(const char* name) {
   const CraterScalingLaw* l = craterScalingClass(name);
-  EXPECT_NE(l, nullptr) << name;
+  if (!l) throw std::logic_error(std::string("no scaling class ") + name);
   return *l;
 }
 
@@ -168,6 +169,15 @@ TEST(CraterScalingScene, TheSetupCarriesTheImpactAndTheSphereGravity) {
   EXPECT_NEAR(i.gravity, 2.6224e-5, 1e-8);
   rz.crater.gravity = 1e-3;
   EXPECT_EQ(craterSetupFromScene(rz)->scaling->impact.gravity, 1e-3);
+  // An RZ sphere off the axis is a ring: refused.
+  for (BodySpec& b : rz.bodies)
+    if (b.velocity[1] != 0.0) b.shape.center[0] = 2.0;
+  try {
+    craterSetupFromScene(rz);
+    FAIL() << "an off-axis RZ impactor was scaled";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("off the axis"), std::string::npos) << e.what();
+  }
 }
 
 void expectSceneError(const std::string& toml, const std::string& part) {
@@ -186,10 +196,25 @@ TEST(CraterScalingScene, BadRequestsAreRefusedByName) {
                    "crater.scaling: no class 'granite' (the classes: water, dry_sand");
   expectSceneError(impactScene("2d", "[crater]\nscaling = \"hard_rock\"\n"), "a trench");
   expectSceneError(impactScene("rz", "[crater]\ngravity = \"1 m/s^2\"\n"), "give `scaling` too");
+  expectSceneError(impactScene("rz", "[crater]\nenabled = false\nscaling = \"hard_rock\"\n"),
+                   "needs enabled = true");
   expectSceneError(impactScene("rz", "[crater]\nscaling = \"hard_rock\"\ngravity = \"-1 m/s^2\"\n"),
                    "gravity");
   // A box target: a plane, so no gravity unless given; dry sand then has nothing to stop it.
   expectSceneError(impactScene("rz", "[crater]\nscaling = \"dry_sand\"\n"), "give [crater] gravity");
+}
+
+TEST(CraterScalingScene, TheSummaryKeepsTheScaledCraterWhenNoneWasMeasured) {
+  CraterSummary c = craterFailure("no depression");
+  c.scalingClass = "hard_rock";
+  c.scaled = scaleCrater(law("hard_rock"), impactRz(0.0));
+  RunSummary s;
+  addToSummary(c, s);
+  EXPECT_TRUE(s.has("crater_scaled_volume_m3"));
+  EXPECT_TRUE(s.has("crater_scaling_regime"));
+  EXPECT_FALSE(s.has("crater_volume_over_scaled"));
+  EXPECT_NE(describeScaledCrater("hard_rock", *c.scaled, std::nullopt).find("volume 2527 m^3"),
+            std::string::npos);
 }
 
 TEST(CraterScalingScene, TheRunsSummaryHoldsTheScaledCrater) {
