@@ -117,20 +117,7 @@ std::optional<ReferenceSurface> boxFaceHit(const ShapeSpec& box, const Point& c,
 
 namespace {
 
-std::optional<CraterSetup> impactSetup(const Scene& scene);
-
-}  // namespace
-
-std::optional<CraterSetup> craterSetupFromScene(const Scene& scene) {
-  std::optional<CraterSetup> setup = impactSetup(scene);
-  if (!setup && scene.crater.enabled && !scene.crater.scaling.empty())
-    throw SceneError(scene.sourcePath + ": crater.scaling: the scene has no impact to scale (a "
-                     "moving body striking bodies at rest, in RZ or 3D)");
-  return setup;
-}
-
-namespace {
-
+// The setup of an impact scene, or nothing when the scene is not one (craterSetupFromScene).
 std::optional<CraterSetup> impactSetup(const Scene& scene) {
   if (!scene.crater.enabled || scene.geometry == Geometry::Line) return std::nullopt;
   const int dims = spatialDimension(scene.geometry);
@@ -233,6 +220,14 @@ std::optional<CraterSetup> impactSetup(const Scene& scene) {
 }
 
 }  // namespace
+
+std::optional<CraterSetup> craterSetupFromScene(const Scene& scene) {
+  std::optional<CraterSetup> setup = impactSetup(scene);
+  if (!setup && scene.crater.enabled && !scene.crater.scaling.empty())
+    throw SceneError(scene.sourcePath + ": crater.scaling: the scene has no impact to scale (a "
+                     "moving body striking bodies at rest, in RZ or 3D)");
+  return setup;
+}
 
 CraterOptions craterOptions(const CraterSetup& setup, double resolution) {
   CraterOptions o;
