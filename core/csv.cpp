@@ -1,5 +1,6 @@
 #include "core/csv.hpp"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -17,6 +18,16 @@ std::string csvNumber(double x) {
   }
   std::snprintf(buf, sizeof buf, "%.17g", x);
   return buf;
+}
+
+bool parseCsvNumber(std::string_view field, double& value) {
+  const std::string text(field);  // strtod needs the terminator
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtod(begin, &end);
+  if (text.empty() || end != begin + text.size()) return false;
+  return errno != ERANGE || std::fabs(value) != HUGE_VAL;  // underflow is a number; overflow is not
 }
 
 std::string csvText(std::string_view text) {

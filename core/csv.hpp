@@ -1,5 +1,5 @@
 #pragma once
-// The one CSV writer of the outputs written by hand (flux.csv, sizing.csv, wall_<patch>.csv,
+// The one CSV writer of the outputs written by hand, and its number reader, (flux.csv, sizing.csv, wall_<patch>.csv,
 // ble.csv, the view-factor tables): a header row, then rows of numbers and text, each row
 // checked to have the header's width.
 //
@@ -18,6 +18,12 @@ namespace ejecta {
 
 std::string csvNumber(double x);
 std::string csvText(std::string_view text);
+
+// Reads a whole field as csvNumber writes it: "nan", "inf" and subnormal numbers included
+// (strtod flags those ERANGE though it reads them exactly: a pressure of 3e-319 Pa where a
+// shock has not arrived is a number). False for an empty field, trailing text, or a value
+// beyond the range of a double.
+bool parseCsvNumber(std::string_view field, double& value);
 
 class CsvWriter {
  public:

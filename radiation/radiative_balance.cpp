@@ -1,15 +1,15 @@
 #include "radiation/radiative_balance.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
 #include <fstream>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
+
+#include "core/csv.hpp"
 
 namespace ejecta::radiation {
 
@@ -120,12 +120,7 @@ std::vector<FluxSeries> readFluxSeriesCsv(const std::filesystem::path& path) {
                            std::to_string(cells.size()));
     std::vector<double> values(columns);
     for (std::size_t c = 0; c < columns; ++c) {
-      const char* begin = cells[c].c_str();
-      char* end = nullptr;
-      errno = 0;
-      values[c] = std::strtod(begin, &end);
-      if (cells[c].empty() || end != begin + cells[c].size() || errno == ERANGE ||
-          !std::isfinite(values[c]))
+      if (!parseCsvNumber(cells[c], values[c]) || !std::isfinite(values[c]))
         fail(lineNumber, "value " + std::to_string(c + 1) + " '" + cells[c] +
                              "' is not a finite number");
     }

@@ -1,12 +1,12 @@
 #include "sim/sources/gauge_decay.hpp"
 
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+
+#include "core/csv.hpp"
 
 namespace ejecta {
 
@@ -123,11 +123,8 @@ GaugePressures readGaugePressures(const std::string& path) {
   g.pressure.resize(columns.size());
 
   auto number = [&](const std::string& field, std::size_t lineNo, std::size_t c) {
-    const char* begin = field.c_str();
-    char* end = nullptr;
-    errno = 0;
-    const double v = std::strtod(begin, &end);
-    if (end == begin || *end != '\0' || errno == ERANGE)
+    double v = 0.0;
+    if (!parseCsvNumber(field, v))
       throw std::runtime_error(path + ":" + std::to_string(lineNo) + ": column '" + header[c] +
                                "': '" + field + "' is not a number");
     return v;

@@ -1,5 +1,6 @@
-// The one CSV writer (core/csv): numbers that read back exactly (and print as "%.9g" did where
-// that already round-trips), NaN and infinities, quoting, rows checked against the header.
+// The one CSV writer (core/csv) and its reader: numbers that read back exactly (and print as
+// "%.9g" did where that already round-trips), NaN and infinities, quoting, rows checked against
+// the header.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -28,6 +29,23 @@ TEST(Csv, NumbersRoundTripAndKeepShortForms) {
     EXPECT_EQ(std::strtod(s.c_str(), nullptr), x) << s;  // stod rejects denormals (ERANGE)
   }
   EXPECT_EQ(csvNumber(1.0 / 3.0), "0.3333333333333333");  // the shortest exact form
+}
+
+TEST(Csv, NumbersReadBackAsWritten) {
+  // Every value csvNumber writes reads back exactly, subnormals too (strtod flags them ERANGE).
+  for (double x : {0.0, -2.5e9, 1.0 / 3.0, std::numeric_limits<double>::max(),
+                   std::numeric_limits<double>::denorm_min(), -3.198679804e-319,
+                   std::numeric_limits<double>::infinity()}) {
+    double v = 0.0;
+    EXPECT_TRUE(parseCsvNumber(csvNumber(x), v)) << csvNumber(x);
+    EXPECT_EQ(v, x) << csvNumber(x);
+  }
+  double v = 0.0;
+  EXPECT_TRUE(parseCsvNumber("nan", v));
+  EXPECT_TRUE(std::isnan(v));
+  EXPECT_TRUE(parseCsvNumber("1e-400", v));  // below the smallest subnormal: 0, still a number
+  EXPECT_EQ(v, 0.0);
+  for (const char* bad : {"", "12x", "1e999", "-1e999", " ", "1,5"}) EXPECT_FALSE(parseCsvNumber(bad, v)) << bad;
 }
 
 TEST(Csv, NotANumberAndInfinities) {

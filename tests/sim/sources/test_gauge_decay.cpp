@@ -186,6 +186,13 @@ TEST_F(GaugeCsv, ReadsTheGaugeFormatAndMeasuresIt) {
   ASSERT_EQ(g.names, (std::vector<std::string>{"a", "b"}));
   ASSERT_EQ(g.time.size(), s.t.size());
   EXPECT_TRUE(std::isnan(g.pressure[1][0]));
+  // A subnormal pressure (what a gauge the shock has not reached can hold, and csvNumber
+  // writes exactly) is read as the number it is: a run's own gauges.csv once stopped
+  // `ejecta converge` here.
+  const GaugePressures tiny = readGaugePressures(
+      write("tiny.csv", "step,time_s,a_pressure_Pa\n0,0,3.198679804e-319\n1,1e-6,-4.9e-324\n"));
+  EXPECT_EQ(tiny.pressure[0][0], 3.198679804e-319);
+  EXPECT_EQ(tiny.pressure[0][1], -std::numeric_limits<double>::denorm_min());
   const ShockPulse pulse = measureShockPulse(g.time, g.pressure[0]);
   // 10 significant digits in the file: theta to about 1e-9 from the fit.
   EXPECT_NEAR(pulse.fitTime / kTheta, 1.0, 1e-8);
@@ -208,6 +215,9 @@ TEST_F(GaugeCsv, BadFilesNameTheFileLineAndReason) {
   EXPECT_NE(message(noGauge).find(":1: the header has no <gauge>_pressure_Pa"), std::string::npos);
   const std::string bad = write("bad.csv", "step,time_s,a_pressure_Pa\n0,0,1\n1,1e-6,12x\n");
   EXPECT_NE(message(bad).find(bad + ":3: column 'a_pressure_Pa': '12x' is not a number"),
+            std::string::npos);
+  const std::string huge = write("huge.csv", "step,time_s,a_pressure_Pa\n0,0,1e999\n");
+  EXPECT_NE(message(huge).find(huge + ":2: column 'a_pressure_Pa': '1e999' is not a number"),
             std::string::npos);
   const std::string shortRow = write("short.csv", "step,time_s,a_pressure_Pa\n0,0\n");
   EXPECT_NE(message(shortRow).find(shortRow + ":2: 2 fields, the header has 3"), std::string::npos);
