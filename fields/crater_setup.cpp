@@ -28,6 +28,25 @@ Point bodyCentre(const ShapeSpec& s) {
 
 double outerRadius(const ShapeSpec& s) { return s.radius; }
 
+// A target cut by the domain box (a cropped body: its material ends at an open face, beyond
+// which the rays would see a bottomless crater) is measured inside it: the search stops 3
+// spacings short of the nearest open face, lateral or below. The RZ axis is no face; walls and
+// periodic sides continue the material.
+void limitSearchToDomain(const Scene& scene, int dims, double spacing, CraterSetup& setup) {
+  double limit = INFINITY;
+  for (int axis = 0; axis < dims; ++axis) {
+    const AxisBounds& b = scene.domain[static_cast<std::size_t>(axis)];
+    if (!b.bounded) continue;
+    const double x = setup.impactPoint[static_cast<std::size_t>(axis)];
+    const bool rzAxis = scene.geometry == Geometry::Axisymmetric && axis == 0;
+    if (b.lower == BoundaryKind::Open && !rzAxis) limit = std::min(limit, x - b.min);
+    if (b.upper == BoundaryKind::Open) limit = std::min(limit, b.max - x);
+  }
+  if (!std::isfinite(limit)) return;
+  const double inside = std::max(limit - 3.0 * spacing, spacing);
+  setup.searchLimit = setup.searchLimit > 0.0 ? std::min(setup.searchLimit, inside) : inside;
+}
+
 // The impactor's volume [m^3] in RZ (shapes revolved about the axis) or 3D; 0 for a shape with
 // no finite volume.
 double impactorVolume(const ShapeSpec& s, Geometry g) {
@@ -215,6 +234,7 @@ std::optional<CraterSetup> impactSetup(const Scene& scene) {
     const double t = disc >= 0.0 ? -b - std::sqrt(disc) : -b;
     setup.impactPoint = add(c, d, t);
   }
+  limitSearchToDomain(scene, dims, outer->spacing, setup);
   if (!scene.crater.scaling.empty()) addScaling(scene, *impactor, setup);
   return setup;
 }

@@ -25,7 +25,8 @@ struct CraterSetup {
   bool planar = false;
   double targetDensity = 0.0;               // [kg/m^3], of the outermost target body
   // How far from the impact point, along the surface, the target extends (a box's nearest side
-  // face, less a few spacings); 0: no limit (a sphere or a half-space).
+  // face, or the nearest open face of a bounded domain that crops the target, less a few
+  // spacings); 0: no limit (a whole sphere or an unbounded half-space).
   double searchLimit = 0.0;
   std::vector<int> targetMaterials;         // material indices
   std::vector<std::string> targetNames;     // their names

@@ -1,7 +1,7 @@
 // Crater measurement from particles (fields/measure_crater, crater_setup; issue 5): targets of
 // particles with a known hole, measured through the whole chain (splat, lattice, ray marching),
-// the crater setup worked out from impact scenes, and an impact run that writes grids and puts
-// the crater into summary.json.
+// the crater setup worked out from impact scenes (a target cropped by the domain measured inside
+// it), and an impact run that writes grids and puts the crater into summary.json.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <string>
+#include <vector>
 #include <unistd.h>
 
 #include "fields/crater_setup.hpp"
@@ -154,6 +156,58 @@ TEST(CraterSetupFromScene, ImpactScenesGiveSurfaceImpactPointAndTargets) {
   EXPECT_FALSE(craterSetupFromScene(still).has_value());
   // Switched off.
   EXPECT_FALSE(craterSetupFromScene(parseScene(impactScene("2d", "[crater]\nenabled = false\n"), "t")).has_value());
+}
+
+// scenes/impact_3d_oblique.toml's asteroid cropped to a box about the impact point (open faces:
+// the material ends there), and the same with walls or periodic sides, which continue it.
+std::vector<std::string> cropOf(const std::string& sides) {
+  const std::string s = sides.empty() ? "" : ", boundary = \"" + sides + "\"";
+  return {"domain.x={ min = \"-15 m\", max = \"20 m\"" + s + " }",
+          "domain.y={ min = \"-16 m\", max = \"17 m\"" + s + " }",
+          "domain.z={ min = \"19 m\", max = \"300 m\"" + s + " }"};
+}
+
+TEST(CraterSetupFromScene, ACroppedTargetIsMeasuredInsideItsDomain) {
+  const std::string path = std::string(EJECTA_SOURCE_DIR) + "/scenes/impact_3d_oblique.toml";
+  const auto whole = craterSetupFromScene(loadScene(path));
+  const auto cropped = craterSetupFromScene(loadScene(path, cropOf("")));
+  ASSERT_TRUE(whole && cropped);
+  EXPECT_EQ(whole->searchLimit, 0.0);  // the whole sphere: no limit
+  // The nearest open face is x = -15 m, 15 m from the impact point (about (0, 0, 35 m): the
+  // path meets the sphere 1 cm from the pole), less 3 spacings of the 1 m crust: 12 m. The
+  // others: y 16 and 17 m, z 16 m below (19 m), far above.
+  EXPECT_NEAR(cropped->searchLimit, 12.0 + cropped->impactPoint[0], 1e-9);
+  EXPECT_NEAR(cropped->searchLimit, 12.0, 0.02);
+  EXPECT_EQ(craterSetupFromScene(loadScene(path, cropOf("wall")))->searchLimit, 0.0);
+  EXPECT_EQ(craterSetupFromScene(loadScene(path, cropOf("periodic")))->searchLimit, 0.0);
+
+  // A bowl 4 m deep and 6 m in radius at the pole of the 35 m sphere, the material cut off at
+  // the crop's faces. Measured with the cropped setup it is the whole body's crater, to
+  // round-off (the rays inside the limit are the same rays); measured as if the body were whole,
+  // the rays past the faces find no material and the crater runs to the search's end.
+  const auto sphereWithBowl = [](const Point& p) {
+    const double r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    const double q2 = p[0] * p[0] + p[1] * p[1];
+    const bool inBowl = p[2] > 31.0 + 4.0 * q2 / 36.0;
+    return r < 35.0 && !inBowl ? 1.0 : 0.0;
+  };
+  const auto croppedField = [&](const Point& p) {
+    const bool inBox = p[0] > -15 && p[0] < 20 && p[1] > -16 && p[1] < 17 && p[2] > 19;
+    return inBox ? sphereWithBowl(p) : 0.0;
+  };
+  const double resolution = 0.25;  // 120 resolutions: a 30 m search without the limit
+  const CraterMetrics reference = analyseCrater(sphereWithBowl, craterOptions(*whole, resolution));
+  const CraterMetrics inside = analyseCrater(croppedField, craterOptions(*cropped, resolution));
+  ASSERT_TRUE(reference.found && inside.found) << reference.note << inside.note;
+  EXPECT_DOUBLE_EQ(inside.depth, reference.depth);
+  EXPECT_DOUBLE_EQ(inside.apparentDiameter, reference.apparentDiameter);
+  EXPECT_NEAR(inside.volume, reference.volume, 1e-12 * reference.volume);
+  // The bowl meets the sphere 5.645 m from the axis (31 + q^2/9 = sqrt(35^2 - q^2)); the
+  // field is sharp, so the edge is found to within the bisection of a ray step.
+  EXPECT_NEAR(reference.apparentDiameter, 2 * 35 * std::asin(5.645 / 35), 2 * resolution);
+  const CraterMetrics blind = analyseCrater(croppedField, craterOptions(*whole, resolution));
+  EXPECT_GT(blind.apparentDiameter, 2 * 15.0);
+  EXPECT_NE(blind.note.find("found void at their start"), std::string::npos) << blind.note;
 }
 
 TEST(ImpactRunOutputs, GridsAndCraterAreWritten) {

@@ -1,0 +1,68 @@
+// Verification (label `verification`): the cropped 3D domain of
+// scenes/impact_3d_oblique_cropped.toml (the asteroid cut to a box 15 m about the impact point,
+// open faces) against the whole asteroid of scenes/impact_3d_oblique.toml, the same impact at
+// the same coarse spacing, to 3 ms: the crater and the coupled energy must be the whole body's
+// (issue 23, "model no more than a scene needs"; docs/impact.md, "A cropped 3D domain").
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+#include <unistd.h>
+
+#include "fields/run_outputs.hpp"
+#include "sim/run/run.hpp"
+#include "sim/setup/scene.hpp"
+
+namespace fs = std::filesystem;
+
+namespace ejecta::fields {
+namespace {
+
+// The scene at a coarse spacing (impactor 1 m, asteroid 2 m: the full body is 22,000 particles),
+// with its crater measured.
+RunSummary runCoarse(const std::string& file) {
+  const fs::path dir = fs::temp_directory_path() / ("ejecta_crop_" + file + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const Scene scene = loadScene(std::string(EJECTA_SOURCE_DIR) + "/scenes/" + file,
+                                {"bodies[0].spacing=1 m", "bodies[1].spacing=2 m", "bodies[2].spacing=2 m",
+                                 "fields.every=1000"});
+  RunOptions options;
+  options.outDir = dir.string();
+  options.configure = [](const Scene& s, RunOptions& o) { addFieldOutputs(o, s); };
+  const RunOutcome r = runScene(scene, options);
+  EXPECT_TRUE(r.ok) << r.error;
+  fs::remove_all(dir);
+  return r.summary;
+}
+
+TEST(VerifyCroppedDomain, TheCroppedAsteroidGivesTheWholeAsteroidsCraterAt3ms) {
+  const RunSummary whole = runCoarse("impact_3d_oblique.toml");
+  const RunSummary cropped = runCoarse("impact_3d_oblique_cropped.toml");
+  std::printf("oblique impact at 3 ms, whole / cropped asteroid: %zu / %zu particles, depth %.3f / "
+              "%.3f m, apparent diameter %.3f / %.3f m, volume %.1f / %.1f m^3, target share %.5f / "
+              "%.5f, wall %.2f / %.2f s\n",
+              whole.particles, cropped.particles, whole.number("crater_depth_m"),
+              cropped.number("crater_depth_m"), whole.number("crater_apparent_diameter_m"),
+              cropped.number("crater_apparent_diameter_m"), whole.number("crater_volume_m3"),
+              cropped.number("crater_volume_m3"), whole.number("target_share_of_impactor_energy"),
+              cropped.number("target_share_of_impactor_energy"), whole.wallSeconds, cropped.wallSeconds);
+  ASSERT_TRUE(whole.flag("crater_found") && cropped.flag("crater_found"));
+  // The box keeps a fifteenth of the particles (measured 1,482 of 22,408).
+  EXPECT_LT(cropped.particles * 10, whole.particles);
+  // The disturbance reaches the box's faces at about 2 ms, and what they reflect has not come
+  // back to change the crater by 3 ms. Measured at this spacing: depth -0.6%, apparent diameter
+  // +0.13%, volume -0.35%, target share -0.001% (at the shipped 1 m spacing of the full body:
+  // 0.005%, 0.02%, 0.03%). Bounds: 2% on the crater (as issue 18 asks of another change of
+  // method on the same crater), 0.1% on the share.
+  EXPECT_NEAR(cropped.number("crater_depth_m") / whole.number("crater_depth_m"), 1.0, 0.02);
+  EXPECT_NEAR(cropped.number("crater_apparent_diameter_m") / whole.number("crater_apparent_diameter_m"), 1.0,
+              0.02);
+  EXPECT_NEAR(cropped.number("crater_volume_m3") / whole.number("crater_volume_m3"), 1.0, 0.02);
+  EXPECT_NEAR(cropped.number("target_share_of_impactor_energy") / whole.number("target_share_of_impactor_energy"),
+              1.0, 1e-3);
+}
+
+}  // namespace
+}  // namespace ejecta::fields
