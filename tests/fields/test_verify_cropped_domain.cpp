@@ -6,16 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <filesystem>
 #include <string>
-#include <vector>
-#include <unistd.h>
 
-#include "fields/run_outputs.hpp"
-#include "sim/run/run.hpp"
-#include "sim/setup/scene.hpp"
-
-namespace fs = std::filesystem;
+#include "support/shipped_impact_run.hpp"
 
 namespace ejecta::fields {
 namespace {
@@ -23,18 +16,9 @@ namespace {
 // The scene at a coarse spacing (impactor 1 m, asteroid 2 m: the full body is 22,000 particles),
 // with its crater measured.
 RunSummary runCoarse(const std::string& file) {
-  const fs::path dir = fs::temp_directory_path() / ("ejecta_crop_" + file + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  const Scene scene = loadScene(std::string(EJECTA_SOURCE_DIR) + "/scenes/" + file,
-                                {"bodies[0].spacing=1 m", "bodies[1].spacing=2 m", "bodies[2].spacing=2 m",
-                                 "fields.every=1000"});
-  RunOptions options;
-  options.outDir = dir.string();
-  options.configure = [](const Scene& s, RunOptions& o) { addFieldOutputs(o, s); };
-  const RunOutcome r = runScene(scene, options);
-  EXPECT_TRUE(r.ok) << r.error;
-  fs::remove_all(dir);
-  return r.summary;
+  return test::runShippedScene(file, {"bodies[0].spacing=1 m", "bodies[1].spacing=2 m", "bodies[2].spacing=2 m",
+                                      "fields.every=1000"},
+                               "crop_" + file);
 }
 
 TEST(VerifyCroppedDomain, TheCroppedAsteroidGivesTheWholeAsteroidsCraterAt3ms) {

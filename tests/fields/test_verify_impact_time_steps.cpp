@@ -7,35 +7,19 @@
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 #include <vector>
-#include <unistd.h>
 
-#include "fields/run_outputs.hpp"
-#include "sim/run/run.hpp"
-#include "sim/setup/scene.hpp"
-
-namespace fs = std::filesystem;
+#include "support/shipped_impact_run.hpp"
 
 namespace ejecta::fields {
 namespace {
 
 RunSummary runImpact(const std::string& stepping, const std::string& file = "impact_rz.toml",
                      const std::vector<std::string>& extra = {}) {
-  const fs::path dir = fs::temp_directory_path() /
-                       ("ejecta_impact_steps_" + stepping + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
   std::vector<std::string> overrides = extra;
   overrides.push_back("time.stepping=" + stepping);
-  const Scene scene = loadScene(std::string(EJECTA_SOURCE_DIR) + "/scenes/" + file, overrides);
-  RunOptions options;
-  options.outDir = dir.string();
-  options.configure = [](const Scene& s, RunOptions& o) { addFieldOutputs(o, s); };
-  const RunOutcome r = runScene(scene, options);
-  EXPECT_TRUE(r.ok) << r.error;
-  fs::remove_all(dir);
-  return r.summary;
+  return test::runShippedScene(file, overrides, "impact_steps_" + stepping);
 }
 
 // Both runs with [time] closing_speed (docs/time_steps.md, "Bodies that meet"): the impactor's
