@@ -11,11 +11,12 @@ what the study cost (wall time times threads, summed over its levels).
 --only runs those studies only (the table still shows every row; a study not run says so).
 --table-only runs nothing. --write puts the table into README.md and docs/asteroid_studies.md
 between their `<!-- headline:begin -->` and `<!-- headline:end -->` lines.
-A study whose scene or --set keys changed since its levels ran is refused: its old levels would
-be read back as if they were the new study's. New factors are welcome: the levels it has are
-reused.
+A study whose scene (its name or its file's text) or --set keys changed since its levels ran is
+refused: its old levels would be read back as if they were the new study's. New factors are
+welcome: the levels it has are reused.
 """
 import argparse
+import hashlib
 import json
 import math
 import os
@@ -67,7 +68,7 @@ def load_manifest(path):
 
 def converge_command(ejecta, study, out, threads):
     command = [ejecta, "converge", study["scene"], "--factors", ",".join("%g" % f for f in study["factors"]),
-               "--out", out, "--no-charts"]
+               "--out", out]
     for answer in study["answer"]:
         command += ["-q", answer["quantity"]]
     if threads:
@@ -79,11 +80,32 @@ def converge_command(ejecta, study, out, threads):
     return command
 
 
+def scene_file(scene):
+    """The file a study's scene names: a path, or a shipped scene's name (scenes/**/NAME.toml);
+    None for a verification problem (verify:NAME), which has no file."""
+    if scene.startswith("verify:"):
+        return None
+    if os.path.isfile(scene):
+        return scene
+    name = scene if scene.endswith(".toml") else scene + ".toml"
+    for folder, _, files in sorted(os.walk(os.path.join(SOURCE, "scenes"))):
+        if name in files:
+            return os.path.join(folder, name)
+    raise HeadlineError("scene '%s': neither a file nor a shipped scene (scenes/**/%s)" % (scene, name))
+
+
 def definition(study):
-    """What makes a study's levels what they are: not the threads, the quantities asked or the
-    factors (each level has its own folder, level_<factor>/, so a study given a finer factor
-    reuses the levels it has and runs the new one)."""
-    return {"scene": study["scene"], "set": list(study.get("set", [])), "key": list(study.get("key", []))}
+    """What makes a study's levels what they are: the scene's text (its SHA-256: a shipped scene
+    edited since is another study), the keys set and scaled; not the threads, the quantities asked
+    or the factors (each level has its own folder, level_<factor>/, so a study given a finer
+    factor reuses the levels it has and runs the new one)."""
+    path = scene_file(study["scene"])
+    digest = None
+    if path:
+        with open(path, "rb") as f:
+            digest = hashlib.sha256(f.read()).hexdigest()
+    return {"scene": study["scene"], "scene_sha256": digest, "set": list(study.get("set", [])),
+            "key": list(study.get("key", []))}
 
 
 def run_study(ejecta, study, out_root, threads):

@@ -104,6 +104,19 @@ def test_a_changed_study_is_refused_not_read_back(tmp_path):
     assert headline.read_study(str(tmp_path / "out"), headline.load_manifest(finer)["study"][0]) is not None
 
 
+def test_a_scene_edited_since_its_levels_ran_is_refused(tmp_path):
+    scene = tmp_path / "blast.toml"
+    scene.write_text("[scene]\nname = \"blast\"\n")
+    manifest = headline.load_manifest(write_manifest(tmp_path / "m.toml", STUDY.replace('"impact_rz"', '"%s"' % scene)))
+    fake_study(tmp_path / "out", manifest["study"][0], [])
+    assert headline.read_study(str(tmp_path / "out"), manifest["study"][0]) is not None
+    scene.write_text("[scene]\nname = \"blast\"\ndescription = \"edited\"\n")
+    with pytest.raises(headline.HeadlineError, match="ran as"):
+        headline.read_study(str(tmp_path / "out"), manifest["study"][0])
+    with pytest.raises(headline.HeadlineError, match="neither a file nor a shipped scene"):
+        headline.definition({"scene": "no_such_scene"})
+
+
 def test_a_quantity_the_study_lacks_is_refused(tmp_path):
     manifest = headline.load_manifest(write_manifest(tmp_path / "m.toml", STUDY))
     fake_study(tmp_path / "out", manifest["study"][0], [
