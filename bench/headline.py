@@ -35,39 +35,50 @@ class HeadlineError(Exception):
 
 
 def load_manifest(path):
-    """The studies and open rows, checked: every study has an id, a scene, three or more factors
-    and answers that name a quantity."""
+    """The studies and open rows, checked: every study has an id, a scene, three or more distinct
+    factors and answers that name a quantity; keys of the types the driver uses."""
     try:
         with open(path, "rb") as f:
             manifest = tomllib.load(f)
     except (OSError, tomllib.TOMLDecodeError) as e:
         raise HeadlineError("%s: %s" % (path, e))
+
+    def need(ok, where, what):
+        if not ok:
+            raise HeadlineError("%s: %s" % (where, what))
+
     studies = manifest.get("study", [])
+    need(isinstance(studies, list), path, "'study' must be an array of tables ([[study]])")
     seen = set()
     for i, study in enumerate(studies):
         where = "%s: study[%d]" % (path, i)
         for key in ("id", "scene", "factors", "answer"):
-            if key not in study:
-                raise HeadlineError("%s: no '%s'" % (where, key))
-        if study["id"] in seen:
-            raise HeadlineError("%s: id '%s' is used twice" % (where, study["id"]))
+            need(key in study, where, "no '%s'" % key)
+        where += " ('%s')" % study["id"]
+        need(isinstance(study["id"], str) and study["id"] not in seen, where, "id: a text, used once")
         seen.add(study["id"])
-        if len(study["factors"]) < 3 or any(not (f > 0) for f in study["factors"]):
-            raise HeadlineError("%s ('%s'): factors %s: three or more, each > 0"
-                                % (where, study["id"], study["factors"]))
+        need(isinstance(study["scene"], str), where, "scene: a text (a shipped scene's name or a path)")
+        factors = study["factors"]
+        need(isinstance(factors, list) and len(factors) >= 3 and len(set(factors)) == len(factors) and
+             all(isinstance(f, (int, float)) and f > 0 for f in factors),
+             where, "factors %s: three or more distinct numbers, each > 0" % (factors,))
+        for key in ("set", "key"):
+            value = study.get(key, [])
+            need(isinstance(value, list) and all(isinstance(v, str) for v in value), where,
+                 "%s: an array of texts" % key)
+        need(isinstance(study["answer"], list) and study["answer"], where, "answer: [[study.answer]] tables")
         for j, answer in enumerate(study["answer"]):
             for key in ("label", "quantity"):
-                if key not in answer:
-                    raise HeadlineError("%s ('%s'): answer[%d] has no '%s'" % (where, study["id"], j, key))
+                need(key in answer, where, "answer[%d] has no '%s'" % (j, key))
+            need(isinstance(answer.get("scale", 1), (int, float)), where, "answer[%d]: scale is a number" % j)
     for i, row in enumerate(manifest.get("open", [])):
         for key in ("label", "why"):
-            if key not in row:
-                raise HeadlineError("%s: open[%d] has no '%s'" % (path, i, key))
+            need(key in row, "%s: open[%d]" % (path, i), "no '%s'" % key)
     return manifest
 
 
 def converge_command(ejecta, study, out, threads):
-    command = [ejecta, "converge", study["scene"], "--factors", ",".join("%g" % f for f in study["factors"]),
+    command = [ejecta, "converge", study["scene"], "--factors", ",".join(repr(float(f)) for f in study["factors"]),
                "--out", out]
     for answer in study["answer"]:
         command += ["-q", answer["quantity"]]
@@ -80,42 +91,63 @@ def converge_command(ejecta, study, out, threads):
     return command
 
 
-def scene_file(scene):
-    """The file a study's scene names: a path, or a shipped scene's name (scenes/**/NAME.toml);
-    None for a verification problem (verify:NAME), which has no file."""
+def scene_text(scene, ejecta):
+    """The text a study's scene names, as ejecta would run it: a file's, or a shipped scene's as
+    the binary holds it (`ejecta scenes show NAME`, which resolves names as `ejecta run` does;
+    an edited scene not yet rebuilt into the binary is then the old one, which is what runs).
+    Without a binary, scenes/NAME.toml from the source tree. None for a verification problem."""
     if scene.startswith("verify:"):
         return None
     if os.path.isfile(scene):
-        return scene
+        with open(scene, "rb") as f:
+            return f.read()
+    if ejecta and os.access(ejecta, os.X_OK):
+        shown = subprocess.run([ejecta, "scenes", "show", scene], capture_output=True)
+        if shown.returncode != 0:
+            raise HeadlineError("scene '%s': %s" % (scene, shown.stderr.decode(errors="replace").strip()))
+        return shown.stdout
     name = scene if scene.endswith(".toml") else scene + ".toml"
-    for folder, _, files in sorted(os.walk(os.path.join(SOURCE, "scenes"))):
-        if name in files:
-            return os.path.join(folder, name)
-    raise HeadlineError("scene '%s': neither a file nor a shipped scene (scenes/**/%s)" % (scene, name))
+    path = os.path.join(SOURCE, "scenes", name)
+    if not os.path.isfile(path):
+        raise HeadlineError("scene '%s': neither a file nor scenes/%s (and no ejecta binary to ask)" % (scene, name))
+    with open(path, "rb") as f:
+        return f.read()
 
 
-def definition(study):
-    """What makes a study's levels what they are: the scene's text (its SHA-256: a shipped scene
-    edited since is another study), the keys set and scaled; not the threads, the quantities asked
+def definition(study, ejecta=None):
+    """What makes a study's levels what they are: the scene's content (the SHA-256 of its parsed
+    document: a shipped scene whose values changed since is another study), the keys set and scaled; not the threads, the quantities asked
     or the factors (each level has its own folder, level_<factor>/, so a study given a finer
     factor reuses the levels it has and runs the new one)."""
-    path = scene_file(study["scene"])
+    text = scene_text(study["scene"], ejecta)
     digest = None
-    if path:
-        with open(path, "rb") as f:
-            digest = hashlib.sha256(f.read()).hexdigest()
+    if text is not None:
+        # Of the parsed document: a comment or layout edit is the same study, a value is not.
+        try:
+            document = tomllib.loads(text.decode())
+        except (UnicodeDecodeError, tomllib.TOMLDecodeError) as e:
+            raise HeadlineError("scene '%s': %s" % (study["scene"], e))
+        canonical = json.dumps(document, sort_keys=True, default=str)
+        digest = hashlib.sha256(canonical.encode()).hexdigest()
     return {"scene": study["scene"], "scene_sha256": digest, "set": list(study.get("set", [])),
             "key": list(study.get("key", []))}
+
+
+def read_json(path):
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except (OSError, ValueError) as e:
+        raise HeadlineError("%s: %s" % (path, e))
 
 
 def run_study(ejecta, study, out_root, threads):
     out = os.path.join(out_root, study["id"])
     os.makedirs(out, exist_ok=True)
     marker = os.path.join(out, "study.json")
-    wanted = definition(study)
+    wanted = definition(study, ejecta)
     if os.path.exists(marker):
-        with open(marker) as f:
-            had = json.load(f).get("definition")
+        had = read_json(marker).get("definition")
         if had != wanted:
             raise HeadlineError("%s: the study '%s' changed since its levels ran (was %s, now %s); remove %s to "
                                 "run it afresh" % (marker, study["id"], had, wanted, out))
@@ -127,35 +159,37 @@ def run_study(ejecta, study, out_root, threads):
     subprocess.run(command, check=True)
 
 
-def read_study(out_root, study):
-    """convergence.json and study.json of a study that ran, or None; refused if its definition
-    differs from the manifest's."""
+def read_study(out_root, study, ejecta=None):
+    """convergence.json of a study that ran, with each level's threads; None when it has not
+    run. A study that ran as another definition than the manifest's (or left no study.json)
+    comes back as {"stale": why}: its row says so rather than showing another study's numbers."""
     out = os.path.join(out_root, study["id"])
     path = os.path.join(out, "convergence.json")
     if not os.path.exists(path):
         return None
-    with open(os.path.join(out, "study.json")) as f:
-        meta = json.load(f)
-    if meta.get("definition") != definition(study):
-        raise HeadlineError("%s: ran as %s, the manifest now says %s; rerun it (remove the folder)"
-                            % (out, meta.get("definition"), definition(study)))
-    with open(path) as f:
-        result = json.load(f)
+    marker = os.path.join(out, "study.json")
+    if not os.path.exists(marker):
+        return {"stale": "%s has no study.json: what it ran is unknown" % out}
+    meta = read_json(marker)
+    if meta.get("definition") != definition(study, ejecta):
+        changed = [k for k, v in definition(study, ejecta).items() if (meta.get("definition") or {}).get(k) != v]
+        return {"stale": "its %s changed since it ran" % ", ".join(changed)}
+    result = read_json(path)
     # Each level's threads from its own summary (levels of one study may have run with different
     # counts); a verification problem keeps no level folders: the study's count then.
     for level in result["levels"]:
         summary = os.path.join(out, "level_%.6g" % level["factor"], "summary.json")
-        threads = meta.get("threads") or 1
+        level["threads"] = meta.get("threads") or 1
         if os.path.exists(summary):
-            with open(summary) as f:
-                threads = json.load(f).get("threads", threads)
-        level["threads"] = threads
+            level["threads"] = read_json(summary).get("threads", level["threads"])
     return result
 
 
 def number(value, unit=""):
     """Three significant figures, thousands separated; the unit after a space (none for %)."""
-    if value == 0:
+    if not math.isfinite(value):
+        text = "%g" % value
+    elif value == 0:
         text = "0"
     else:
         digits = max(0, 2 - math.floor(math.log10(abs(value))))
@@ -174,41 +208,53 @@ def duration(seconds):
 
 
 def answer_row(study, answer, result):
-    """One Markdown row: the answer, the finest value, extrapolated +- band, order, note, finest
-    spacing and particles, cost of all levels."""
+    """One Markdown row: the answer; the finest value with its GCI band (Celik et al. 2008 put
+    the band about the finest solution) or, where the procedure does not apply, the spread of the
+    three finest levels; the extrapolated value; the order; the note; the finest spacing and
+    particles; the core time of all levels."""
+    rerun = "`bench/headline.py --only %s`" % study["id"]
     if result is None:
-        return "| %s | not run yet (`bench/headline.py --only %s`) | | | | | |" % (answer["label"], study["id"])
+        return "| %s | not run yet (%s) | | | | | |" % (answer["label"], rerun)
+    if "stale" in result:
+        return "| %s | stale: %s (%s) | | | | | |" % (answer["label"], result["stale"], rerun)
     scale = answer.get("scale", 1.0)
     unit = answer.get("unit", "")
     found = [q for q in result["quantities"] if q["quantity"] == answer["quantity"]]
     if not found:
-        raise HeadlineError("study '%s' has no quantity '%s': rerun it (its levels are read back)"
-                            % (study["id"], answer["quantity"]))
+        return "| %s | not run yet: the study ran without '%s' (%s) | | | | | |" % (
+            answer["label"], answer["quantity"], rerun)
     q = found[0]
     levels = result["levels"]
     finest = levels[-1]
-    note = q.get("note", "")
+    notes = [q["note"]] if q.get("note") else []
+    missing = len(set(study["factors"]) - {l["factor"] for l in levels})
+    if missing:
+        notes.append("%d of the %d levels asked for have not run (%s)" % (missing, len(study["factors"]), rerun))
     order = "%.2f" % q["observed_order"] if q.get("valid") else "—"
-    if q.get("valid") and not note:
-        extrapolated = "%s ± %s" % (number(q["extrapolated"] * scale, unit), number(q["uncertainty"] * scale, unit))
+    fine = number(q["finest"] * scale, unit)
+    if q.get("valid") and not q.get("note"):
+        value = "%s ± %s" % (fine, number(q["uncertainty"] * scale, unit))
+        extrapolated = number(q["extrapolated"] * scale, unit)
     else:
         # Where the procedure does not apply (oscillation, an order out of range, no order) an
         # extrapolation claims nothing: the spread of the three finest levels is what is known.
         last = sorted(l["values"][answer["quantity"]] * scale for l in levels[-3:])
-        extrapolated = "not settled: %s to %s (three finest)" % (number(last[0], unit), number(last[-1], unit))
+        value = "%s (not settled: %s to %s over the three finest)" % (fine, number(last[0], unit),
+                                                                     number(last[-1], unit))
+        extrapolated = "—"
     core_seconds = sum(l["wall_seconds"] * l["threads"] for l in levels)
     spacings = ", ".join("%.3g" % l["spacing_m"] for l in levels)
     return "| %s | %s | %s | %s | %s | %.3g m; %s | %s (%d levels: %s m) |" % (
-        answer["label"], number(q["finest"] * scale, unit), extrapolated, order, note,
-        finest["spacing_m"], "{:,}".format(finest["particles"]), duration(core_seconds), len(levels), spacings)
+        answer["label"], value, extrapolated, order, "; ".join(notes), finest["spacing_m"],
+        "{:,}".format(finest["particles"]), duration(core_seconds), len(levels), spacings)
 
 
-def table(manifest, out_root):
-    lines = ["| answer | finest run | extrapolated ± GCI band | observed order | note | finest spacing; particles "
+def table(manifest, out_root, ejecta=None):
+    lines = ["| answer | finest run ± GCI band | extrapolated | observed order | note | finest spacing; particles "
              "| cost (core time, all levels) |",
              "|---|---|---|---|---|---|---|"]
     for study in manifest.get("study", []):
-        result = read_study(out_root, study)
+        result = read_study(out_root, study, ejecta)
         for answer in study["answer"]:
             lines.append(answer_row(study, answer, result))
     for row in manifest.get("open", []):
@@ -255,7 +301,7 @@ def main(argv=None):
                 if args.only and study["id"] not in args.only:
                     continue
                 run_study(args.ejecta, study, args.out, args.threads)
-        text = table(manifest, args.out)
+        text = table(manifest, args.out, args.ejecta)
         sys.stdout.write(text)
         if args.write:
             for name in TABLE_FILES:

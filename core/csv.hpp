@@ -1,7 +1,7 @@
 #pragma once
-// The one CSV writer of the outputs written by hand, and its number reader, (flux.csv, sizing.csv, wall_<patch>.csv,
+// The one CSV writer of the outputs written by hand (flux.csv, sizing.csv, wall_<patch>.csv,
 // ble.csv, the view-factor tables): a header row, then rows of numbers and text, each row
-// checked to have the header's width.
+// checked to have the header's width; and the reader of the numbers it writes.
 //
 // Numbers are written as printf's "%.9g" when that reads back as the same double (so 0.1,
 // 3000 and 0.0005 print as before), else with as many more significant digits, up to 17, as it
@@ -19,10 +19,10 @@ namespace ejecta {
 std::string csvNumber(double x);
 std::string csvText(std::string_view text);
 
-// Reads a whole field as csvNumber writes it: "nan", "inf" and subnormal numbers included
-// (strtod flags those ERANGE though it reads them exactly: a pressure of 3e-319 Pa where a
-// shock has not arrived is a number). False for an empty field, trailing text, or a value
-// beyond the range of a double.
+// Reads a whole field as strtod does, as csvNumber writes it: "nan", "inf" and subnormal numbers
+// included (strtod flags those ERANGE though it reads them exactly: a pressure of 3e-319 Pa where
+// a shock has not arrived is a number; one below the smallest subnormal reads as 0). False for
+// an empty field, text after the number, or a magnitude above the largest double.
 bool parseCsvNumber(std::string_view field, double& value);
 
 class CsvWriter {

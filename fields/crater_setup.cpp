@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 namespace ejecta::fields {
 
@@ -28,22 +30,80 @@ Point bodyCentre(const ShapeSpec& s) {
 
 double outerRadius(const ShapeSpec& s) { return s.radius; }
 
-// A target cut by the domain box (a cropped body: its material ends at an open face, beyond
-// which the rays would see a bottomless crater) is measured inside it: the search stops 3
-// spacings short of the nearest open face, lateral or below. The RZ axis is no face; walls and
-// periodic sides continue the material.
-void limitSearchToDomain(const Scene& scene, int dims, double spacing, CraterSetup& setup) {
+// Spacings kept between the crater search and where the target's material ends (a box
+// target's side, a domain face): an SPH surface is rounded there over about a smoothing length.
+constexpr double kSpacingsClearOfEdges = 3.0;
+
+// Whether the plane x[axis] = position passes through the body (a face beyond it leaves the body
+// whole). A half-space is unbounded: every face that is not above it (skipped by the caller) cuts.
+bool planeCuts(const ShapeSpec& s, int axis, double position) {
+  const auto a = static_cast<std::size_t>(axis);
+  switch (s.kind) {
+    case ShapeKind::Sphere:
+    case ShapeKind::Shell: return std::abs(position - s.center[a]) < s.radius;
+    case ShapeKind::Box: return position > s.min[a] && position < s.max[a];
+    case ShapeKind::HalfSpace: return true;
+  }
+  return true;
+}
+
+// A target cut by the domain box (a cropped body) is measured inside it. The crater is measured
+// on a field splatted from the real particles alone, so past any face that cuts the target
+// (open, a wall or a periodic side alike: no ghost or image is splatted) a ray finds no material
+// and would read a bottomless crater. The search stops kSpacingsClearOfEdges short of the
+// nearest such face, lateral or below the surface; a face above it (outward normal within 45
+// degrees of the surface normal) cuts nothing the rays need, and the RZ axis is no face. Since
+// the rays start one search radius below the surface (fields/crater.cpp), a face below limits
+// the lateral reach too. Throws SceneError when the impact point is outside the box or too near
+// a face for any crater to be measured.
+void limitSearchToDomain(const Scene& scene, int dims, const BodySpec& target, CraterSetup& setup) {
+  const Point& q = setup.impactPoint;
+  Point n = setup.surface.normal;
+  if (setup.surface.kind == ReferenceSurface::Kind::Sphere) {
+    const Point r = {q[0] - setup.surface.center[0], q[1] - setup.surface.center[1],
+                     q[2] - setup.surface.center[2]};
+    const double length = norm(r);
+    n = length > 0.0 ? Point{r[0] / length, r[1] / length, r[2] / length} : Point{};
+  }
+  static const char* kAxisNames[] = {"x", "y", "z"};
   double limit = INFINITY;
+  std::string nearest;
   for (int axis = 0; axis < dims; ++axis) {
-    const AxisBounds& b = scene.domain[static_cast<std::size_t>(axis)];
+    const auto a = static_cast<std::size_t>(axis);
+    const AxisBounds& b = scene.domain[a];
     if (!b.bounded) continue;
-    const double x = setup.impactPoint[static_cast<std::size_t>(axis)];
     const bool rzAxis = scene.geometry == Geometry::Axisymmetric && axis == 0;
-    if (b.lower == BoundaryKind::Open && !rzAxis) limit = std::min(limit, x - b.min);
-    if (b.upper == BoundaryKind::Open) limit = std::min(limit, b.max - x);
+    const struct {
+      double position, outward;
+      bool counts;
+      const char* side;
+    } faces[] = {{b.min, -1.0, !rzAxis, "lower"}, {b.max, 1.0, true, "upper"}};
+    for (const auto& f : faces) {
+      const bool above = f.outward * n[a] > std::numbers::sqrt2 / 2;
+      if (!f.counts || above || !planeCuts(target.shape, axis, f.position)) continue;
+      const double distance = f.outward * (f.position - q[a]);
+      if (distance < limit) {
+        limit = distance;
+        nearest = std::string(f.side) + " " + kAxisNames[axis] + " face";
+      }
+    }
   }
   if (!std::isfinite(limit)) return;
-  const double inside = std::max(limit - 3.0 * spacing, spacing);
+  const double spacing = target.spacing;
+  const double needed = (kSpacingsClearOfEdges + 1.0) * spacing;
+  if (limit < needed) {
+    char text[200];
+    if (limit < 0.0)
+      std::snprintf(text, sizeof text, "outside the domain, %g m past its %s", -limit,
+                    nearest.c_str());
+    else
+      std::snprintf(text, sizeof text,
+                    "%g m inside the domain's %s, under the %g m (%g spacings) a crater "
+                    "measurement needs", limit, nearest.c_str(), needed, needed / spacing);
+    throw SceneError(scene.sourcePath + ": crater: the impact point lies " + text +
+                     "; widen the domain, or set [crater] enabled = false");
+  }
+  const double inside = limit - kSpacingsClearOfEdges * spacing;
   setup.searchLimit = setup.searchLimit > 0.0 ? std::min(setup.searchLimit, inside) : inside;
 }
 
@@ -100,8 +160,8 @@ void addScaling(const Scene& scene, const BodySpec& impactor, CraterSetup& setup
   try {
     scaleCrater(*law, impact);  // refused now, not after the run
   } catch (const std::invalid_argument& e) {
-    throw SceneError(where + e.what() +
-                     (impact.gravity == 0.0 && !scene.crater.gravity ? "; give [crater] gravity" : ""));
+    const bool noGravity = impact.gravity == 0.0 && !scene.crater.gravity;
+    throw SceneError(where + e.what() + (noGravity ? "; give [crater] gravity" : ""));
   }
   setup.scaling = CraterScaling{*law, impact};
 }
@@ -210,7 +270,7 @@ std::optional<CraterSetup> impactSetup(const Scene& scene) {
       }
       if (scene.geometry == Geometry::Axisymmetric)
         limit = box.max[0] - p[0];  // the axis is no edge
-      setup.searchLimit = std::max(limit - 3.0 * outer->spacing, outer->spacing);
+      setup.searchLimit = std::max(limit - kSpacingsClearOfEdges * outer->spacing, outer->spacing);
     }
     if (!outer)
       throw SceneError(scene.sourcePath + ": crater: the path of body '" + impactor->name +
@@ -234,7 +294,7 @@ std::optional<CraterSetup> impactSetup(const Scene& scene) {
     const double t = disc >= 0.0 ? -b - std::sqrt(disc) : -b;
     setup.impactPoint = add(c, d, t);
   }
-  limitSearchToDomain(scene, dims, outer->spacing, setup);
+  limitSearchToDomain(scene, dims, *outer, setup);
   if (!scene.crater.scaling.empty()) addScaling(scene, *impactor, setup);
   return setup;
 }

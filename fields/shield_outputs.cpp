@@ -6,7 +6,9 @@
 #include <filesystem>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 
+#include "core/csv.hpp"
 #include "fields/history_csv.hpp"
 
 namespace fs = std::filesystem;
@@ -32,6 +34,14 @@ struct EarlierRows {
   std::optional<double> firstPerforated;
 };
 
+double cellNumber(const std::string& cell, const std::string& row) {
+  double v = 0.0;
+  if (!parseCsvNumber(cell, v))
+    throw std::runtime_error("shield_history.csv: '" + cell + "' is not a number, in the row '" +
+                             row + "'");
+  return v;
+}
+
 EarlierRows earlierRows(const std::vector<std::string>& rows) {
   EarlierRows e;
   for (const std::string& row : rows) {
@@ -40,8 +50,8 @@ EarlierRows earlierRows(const std::vector<std::string>& rows) {
     std::getline(in, time, ',');
     std::getline(in, perforated, ',');
     for (int c = 2; c < 8; ++c) std::getline(in, cell, ',');  // ends on peak_deflection_m
-    e.peak = std::max(e.peak, std::stod(cell));
-    if (perforated == "1" && !e.firstPerforated) e.firstPerforated = std::stod(time);
+    e.peak = std::max(e.peak, cellNumber(cell, row));
+    if (perforated == "1" && !e.firstPerforated) e.firstPerforated = cellNumber(time, row);
   }
   return e;
 }

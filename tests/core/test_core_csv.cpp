@@ -45,7 +45,8 @@ TEST(Csv, NumbersReadBackAsWritten) {
   EXPECT_TRUE(std::isnan(v));
   EXPECT_TRUE(parseCsvNumber("1e-400", v));  // below the smallest subnormal: 0, still a number
   EXPECT_EQ(v, 0.0);
-  for (const char* bad : {"", "12x", "1e999", "-1e999", " ", "1,5"}) EXPECT_FALSE(parseCsvNumber(bad, v)) << bad;
+  for (const char* bad : {"", "12x", "1e999", "-1e999", " ", "1,5"})
+    EXPECT_FALSE(parseCsvNumber(bad, v)) << bad;
 }
 
 TEST(Csv, NotANumberAndInfinities) {

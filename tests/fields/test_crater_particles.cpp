@@ -158,13 +158,23 @@ TEST(CraterSetupFromScene, ImpactScenesGiveSurfaceImpactPointAndTargets) {
   EXPECT_FALSE(craterSetupFromScene(parseScene(impactScene("2d", "[crater]\nenabled = false\n"), "t")).has_value());
 }
 
-// scenes/impact_3d_oblique.toml's asteroid cropped to a box about the impact point (open faces:
-// the material ends there), and the same with walls or periodic sides, which continue it.
-std::vector<std::string> cropOf(const std::string& sides) {
+// scenes/impact_3d_oblique.toml's asteroid cropped to a box about the impact point, its faces
+// `sides` (empty: open), the top `zMax`.
+std::vector<std::string> cropOf(const std::string& sides, const std::string& zMax = "300 m",
+                                const std::string& xMin = "-15 m", const std::string& yMin = "-16 m") {
   const std::string s = sides.empty() ? "" : ", boundary = \"" + sides + "\"";
-  return {"domain.x={ min = \"-15 m\", max = \"20 m\"" + s + " }",
-          "domain.y={ min = \"-16 m\", max = \"17 m\"" + s + " }",
-          "domain.z={ min = \"19 m\", max = \"300 m\"" + s + " }"};
+  return {"domain.x={ min = \"" + xMin + "\", max = \"20 m\"" + s + " }",
+          "domain.y={ min = \"" + yMin + "\", max = \"17 m\"" + s + " }",
+          "domain.z={ min = \"19 m\", max = \"" + zMax + "\"" + s + " }"};
+}
+
+std::string sceneErrorOf(const std::string& path, const std::vector<std::string>& overrides) {
+  try {
+    craterSetupFromScene(loadScene(path, overrides));
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "no error";
 }
 
 TEST(CraterSetupFromScene, ACroppedTargetIsMeasuredInsideItsDomain) {
@@ -173,13 +183,29 @@ TEST(CraterSetupFromScene, ACroppedTargetIsMeasuredInsideItsDomain) {
   const auto cropped = craterSetupFromScene(loadScene(path, cropOf("")));
   ASSERT_TRUE(whole && cropped);
   EXPECT_EQ(whole->searchLimit, 0.0);  // the whole sphere: no limit
-  // The nearest open face is x = -15 m, 15 m from the impact point (about (0, 0, 35 m): the
-  // path meets the sphere 1 cm from the pole), less 3 spacings of the 1 m crust: 12 m. The
-  // others: y 16 and 17 m, z 16 m below (19 m), far above.
+  // The nearest face is x = -15 m, 15 m from the impact point (about (0, 0, 35 m): the path
+  // meets the sphere 1 cm from the pole), less 3 spacings of the 1 m crust: 12 m. The others:
+  // y 16 and 17 m, z 16 m below (19 m), far above.
   EXPECT_NEAR(cropped->searchLimit, 12.0 + cropped->impactPoint[0], 1e-9);
   EXPECT_NEAR(cropped->searchLimit, 12.0, 0.02);
-  EXPECT_EQ(craterSetupFromScene(loadScene(path, cropOf("wall")))->searchLimit, 0.0);
-  EXPECT_EQ(craterSetupFromScene(loadScene(path, cropOf("periodic")))->searchLimit, 0.0);
+  // The crater is measured on the real particles alone: past a wall or a periodic side there is
+  // no material either, so they limit the search as an open face does.
+  EXPECT_EQ(craterSetupFromScene(loadScene(path, cropOf("wall")))->searchLimit, cropped->searchLimit);
+  EXPECT_EQ(craterSetupFromScene(loadScene(path, cropOf("periodic")))->searchLimit, cropped->searchLimit);
+  // A face above the surface cuts nothing the rays need: the top 1 m above the pole changes
+  // nothing; nor does a face that misses the asteroid (y from -40 m: the sphere's edge is -35 m).
+  EXPECT_EQ(craterSetupFromScene(loadScene(path, cropOf("", "36 m")))->searchLimit, cropped->searchLimit);
+  EXPECT_NEAR(craterSetupFromScene(loadScene(path, cropOf("", "300 m", "-40 m", "-40 m")))->searchLimit,
+              16.0 - 3.0, 1e-9);  // then the nearest is the bottom, 16 m below
+  // An impact point too near a face, or outside the box, is refused by name.
+  EXPECT_NE(sceneErrorOf(path, cropOf("", "300 m", "-3 m")).find(
+                "crater: the impact point lies 3"),
+            std::string::npos);
+  EXPECT_NE(sceneErrorOf(path, cropOf("", "300 m", "-3 m")).find("inside the domain's lower x face"),
+            std::string::npos);
+  EXPECT_NE(sceneErrorOf(path, cropOf("", "300 m", "-15 m", "0.5 m")).find(
+                "outside the domain, 0.5 m past its lower y face"),
+            std::string::npos);
 
   // A bowl 4 m deep and 6 m in radius at the pole of the 35 m sphere, the material cut off at
   // the crop's faces. Measured with the cropped setup it is the whole body's crater, to
