@@ -229,7 +229,8 @@ def answer_row(study, answer, result):
     notes = [q["note"]] if q.get("note") else []
     missing = len(set(study["factors"]) - {l["factor"] for l in levels})
     if missing:
-        notes.append("%d of the %d levels asked for have not run (%s)" % (missing, len(study["factors"]), rerun))
+        notes.append("%d of the %d levels asked for %s not run yet (%s)" % (
+            missing, len(study["factors"]), "has" if missing == 1 else "have", rerun))
     order = "%.2f" % q["observed_order"] if q.get("valid") else "—"
     fine = number(q["finest"] * scale, unit)
     if q.get("valid") and not q.get("note"):
