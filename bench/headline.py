@@ -171,8 +171,9 @@ def read_study(out_root, study, ejecta=None):
     if not os.path.exists(marker):
         return {"stale": "%s has no study.json: what it ran is unknown" % out}
     meta = read_json(marker)
-    if meta.get("definition") != definition(study, ejecta):
-        changed = [k for k, v in definition(study, ejecta).items() if (meta.get("definition") or {}).get(k) != v]
+    had, wanted = meta.get("definition") or {}, definition(study, ejecta)
+    if had != wanted:
+        changed = [k for k, v in wanted.items() if had.get(k) != v]
         return {"stale": "its %s changed since it ran" % ", ".join(changed)}
     result = read_json(path)
     # Each level's threads from its own summary (levels of one study may have run with different
