@@ -20,7 +20,8 @@ namespace ejecta::app {
 
 namespace {
 
-// <quantity>.png: the value against the spacing (the extrapolated value and its band as lines)
+// <quantity>.png: the value against the spacing (the extrapolated value solid, the finest value's
+// GCI band dotted)
 // and <quantity>_cost.png against the wall time. Returns why not, or "".
 std::string drawCharts(const fs::path& out, const coupling::ConvergenceResult& r) {
   render::ChartRunner charts;
@@ -32,10 +33,10 @@ std::string drawCharts(const fs::path& out, const coupling::ConvergenceResult& r
       if (g.valid) {
         char label[64];
         std::snprintf(label, sizeof label, "extrapolated (Richardson, p = %.2f)", g.order);
-        lines.push_back({g.extrapolated, label});
+        lines.push_back({g.extrapolated, label, render::LineStyle::Solid});
         const double fine = r.levels.back().values.at(q.name);
-        lines.push_back({fine + g.uncertainty, "finest value +- GCI"});
-        lines.push_back({fine - g.uncertainty, ""});
+        lines.push_back({fine + g.uncertainty, "finest value +- GCI band", render::LineStyle::Dotted});
+        lines.push_back({fine - g.uncertainty, "", render::LineStyle::Dotted});
       }
       charts.writeChart({.csv = out / "levels.csv", .x = "spacing_m",
                          .series = {{.y = q.name, .label = "SPH", .markers = true}},
@@ -110,8 +111,11 @@ int convergeCommand(const ConvergeArgs& args) {
     const verify::GridConvergence& g = q.convergence;
     const double fine = r.levels.back().values.at(q.name);
     if (g.valid)
-      std::printf("  %s: finest %.6g, extrapolated %.6g +- %.3g (GCI %.3g%%), observed order %.3g%s\n", q.name.c_str(),
-                  fine, g.extrapolated, g.uncertainty, 100 * g.gci, g.order, g.note.empty() ? "" : (" (" + g.note + ")").c_str());
+      // Celik et al. (2008): the GCI band is the finest solution's uncertainty, so it is printed
+      // about the finest value; the extrapolation is the estimate it brackets.
+      std::printf("  %s: finest %.6g +- %.3g (GCI %.3g%%), extrapolated %.6g, observed order %.3g%s\n", q.name.c_str(),
+                  fine, g.uncertainty, 100 * g.gci, g.extrapolated, g.order,
+                  g.note.empty() ? "" : (" (" + g.note + ")").c_str());
     else
       std::printf("  %s: finest %.6g; %s\n", q.name.c_str(), fine, g.note.c_str());
   }

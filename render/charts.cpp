@@ -19,6 +19,15 @@ namespace {
 std::string path(const fs::path& p) { return jsonString(p.empty() ? "" : fs::absolute(p).string()); }
 const char* boolean(bool b) { return b ? "true" : "false"; }
 
+const char* lineStyleName(LineStyle style) {
+  switch (style) {
+    case LineStyle::Dotted: return "dotted";
+    case LineStyle::Solid: return "solid";
+    case LineStyle::Dashed: break;
+  }
+  return "dashed";
+}
+
 // A private temporary directory, removed with everything in it when done.
 class TemporaryDirectory {
  public:
@@ -83,7 +92,8 @@ std::string chartSpecJson(const ChartSpec& spec) {
   json += "  \"hlines\": [";
   for (std::size_t i = 0; i < spec.hlines.size(); ++i)
     json += (i ? ", " : "") + std::string("{\"y\": ") + jsonNumber(spec.hlines[i].y, 17) +
-            ", \"label\": " + jsonString(spec.hlines[i].label) + "}";
+            ", \"label\": " + jsonString(spec.hlines[i].label) +
+            ", \"style\": " + jsonString(lineStyleName(spec.hlines[i].style)) + "}";
   json += "],\n  \"vlines\": [";
   for (std::size_t i = 0; i < spec.vlines.size(); ++i)
     json += (i ? ", " : "") + std::string("{\"x\": ") + jsonNumber(spec.vlines[i].y, 17) +

@@ -29,11 +29,16 @@ struct ChartSeries {
   bool negate = false;          // plot -y: a depth drawn downward below a surface at 0
 };
 
+// How a horizontal line is drawn (grey in every case): dashed by default; where a chart has two
+// kinds (an estimate and its band) one of them solid or dotted tells them apart in the legend.
+enum class LineStyle { Dashed, Dotted, Solid };
+
 // A horizontal line across a line chart (the pre-impact surface, a limit), or a vertical one
-// (a resolution limit): `y` is its place on the axis it crosses.
+// (a resolution limit, always dotted): `y` is its place on the axis it crosses.
 struct ChartLine {
   double y = 0.0;
   std::string label{};
+  LineStyle style = LineStyle::Dashed;
 };
 
 struct ChartSpec {

@@ -24,7 +24,8 @@ one line per wall_thickness_m (speed in km/s, critical diameter in mm), the regi
 found in the regime column as dotted lines, and the threat, if given, as a marker. The column
 names may be changed with "group", "x", "y" and "regime".
 A series may name its own csv and x column; "negate": plot -y (a depth downward). The spec may add
-"hlines" ([{"y": 0, "label": "pre-impact surface"}], dashed grey), "vlines" ([{"x": 1e-3,
+"hlines" ([{"y": 0, "label": "pre-impact surface", "style": "dashed"}], grey; "style" dashed (the default),
+dotted or solid), "vlines" ([{"x": 1e-3,
 "label": "resolution"}], dotted grey) and "note" (a line of text in the middle of the axes, e.g. "no
 coating needed" over all-zero bars). An x label ending in "[s]" is shown in ms or us (the
 values scaled) when every time is below 2 s or 2 ms. "reference": a dashed black line (an exact
@@ -41,6 +42,9 @@ import csv
 import json
 import os
 import sys
+
+
+LINE_STYLES = {"dashed": "--", "dotted": ":", "solid": "-"}
 
 
 def fail(message):
@@ -196,7 +200,10 @@ def draw(spec, base):
     if spec.get("ylog"):
         axes.set_yscale("log")
     for line in spec.get("hlines") or []:
-        axes.axhline(float(line.get("y", 0.0)), color="0.45", linestyle="--", linewidth=1.2,
+        style = line.get("style", "dashed")
+        if style not in LINE_STYLES:
+            fail(f"hlines: style \"{style}\" is not one of {', '.join(LINE_STYLES)}")
+        axes.axhline(float(line.get("y", 0.0)), color="0.45", linestyle=LINE_STYLES[style], linewidth=1.2,
                      label=line.get("label") or None, zorder=1)
     for line in spec.get("vlines") or []:
         axes.axvline(float(line.get("x", 0.0)), color="0.45", linestyle=":", linewidth=1.4,
