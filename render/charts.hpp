@@ -49,8 +49,8 @@ struct ChartSpec {
   bool xlog = false, ylog = false;
   std::string xlabel{}, ylabel{}, title{};  // labels with units, e.g. "t [s]"; an x label in
                                             // [s] is shown in ms or us when the times are short
-  std::vector<ChartLine> hlines{};          // dashed grey lines
-  std::vector<ChartLine> vlines{};          // dashed grey vertical lines, at x = ChartLine::y
+  std::vector<ChartLine> hlines{};          // grey lines, each in its style (dashed by default)
+  std::vector<ChartLine> vlines{};          // dotted grey vertical lines, at x = ChartLine::y
   std::string note{};                       // a line of text in the middle of the axes: "no
                                             // coating needed" where the bars are all zero
   std::filesystem::path out{};              // the PNG

@@ -200,7 +200,7 @@ def draw(spec, base):
     if spec.get("ylog"):
         axes.set_yscale("log")
     for line in spec.get("hlines") or []:
-        style = line.get("style", "dashed")
+        style = line.get("style") or "dashed"
         if style not in LINE_STYLES:
             fail(f"hlines: style \"{style}\" is not one of {', '.join(LINE_STYLES)}")
         axes.axhline(float(line.get("y", 0.0)), color="0.45", linestyle=LINE_STYLES[style], linewidth=1.2,

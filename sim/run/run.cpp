@@ -423,6 +423,9 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
     s.extras.push_back({"rebalances", static_cast<std::int64_t>(d.rebalances)});
     s.extras.push_back({"load_imbalance", d.lastImbalance});
   }
+  // How far each resting body was moved to its rest (sim/setup/resting_bodies.hpp).
+  for (const BodySpec& b : scene.bodies)
+    if (!b.restOn.empty()) s.extras.push_back({"rest_move_" + b.name + "_m", b.restMove});
   s.energy.initial = info.initialEnergy;
   s.energy.final = t.total();
   const double expected = info.initialEnergy + sim.delayedEnergyAdded();

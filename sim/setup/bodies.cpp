@@ -202,11 +202,7 @@ std::size_t fillBody(const Scene& scene, const MaterialTable& materials, std::si
   const std::size_t before = range.next;
 
   auto visit = [&](const Point& x) {
-    if (!insideShape(body.shape, x, dim) || !insideDomain(scene, x, dim)) return;
-    for (std::size_t k = 0; k < index; ++k)
-      if (insideShape(scene.bodies[k].shape, x, dim)) return;  // an earlier body owns it
-    for (const VoidSpec& v : scene.voids)
-      if (v.firstCarved <= index && insideVoid(v, x, dim)) return;  // so does an earlier void
+    if (!bodyOwnsPoint(scene, index, x, scene.bodies.size())) return;
     // RZ: each particle is a ring of radius r; planar 2D: per metre depth; 1D: per m^2.
     const double mass = body.density * cell * (rz ? 2.0 * std::numbers::pi * x[0] : 1.0);
     const std::size_t number = range.next++;
@@ -353,6 +349,49 @@ bool insideBowl(const BowlSpec& bowl, const std::array<double, 3>& x, int dimens
 
 bool insideVoid(const VoidSpec& v, const std::array<double, 3>& x, int dimension) {
   return v.isBowl ? insideBowl(v.bowl, x, dimension) : insideShape(v.shape, x, dimension);
+}
+
+bool bodyOwnsPoint(const Scene& scene, std::size_t index, const Point& x, std::size_t ignoring) {
+  const int dim = spatialDimension(scene.geometry);
+  if (!insideShape(scene.bodies[index].shape, x, dim) || !insideDomain(scene, x, dim)) return false;
+  for (std::size_t k = 0; k < index; ++k)
+    if (k != ignoring && insideShape(scene.bodies[k].shape, x, dim)) return false;  // an earlier body owns it
+  for (const VoidSpec& v : scene.voids)
+    if (v.firstCarved <= index && insideVoid(v, x, dim)) return false;  // so does an earlier void
+  return true;
+}
+
+std::vector<Point> bodyLatticePoints(const Scene& scene, std::size_t index, const Point& lo,
+                                     const Point& hi, std::size_t ignoring, std::size_t maxPoints) {
+  const BodySpec& body = scene.bodies.at(index);
+  const int dim = spatialDimension(scene.geometry);
+  const std::size_t entry = body.entry >= 0 ? static_cast<std::size_t>(body.entry) : index;
+  const std::string context = where(scene, body.line) + ": key 'bodies[" + std::to_string(entry) +
+                              "]': body '" + body.name + "'";
+  Bounds bounds = bodyBounds(scene, body.shape, dim);
+  for (int d = 0; d < dim; ++d) {
+    bounds.lo[d] = std::max(bounds.lo[d], lo[d]);
+    bounds.hi[d] = std::min(bounds.hi[d], hi[d]);
+    if (!(bounds.lo[d] <= bounds.hi[d])) return {};
+  }
+  // Counted before any is visited: the caller's bound holds for the points tried, not only kept
+  // (a cubic cell per point; the other lattices pack at most sqrt 2 more).
+  double candidates = 1.0;
+  for (int d = 0; d < dim; ++d) candidates *= (bounds.hi[d] - bounds.lo[d]) / body.spacing + 3.0;
+  if (!(candidates <= 2.0 * static_cast<double>(maxPoints))) {
+    std::ostringstream msg;
+    msg << context << ": about " << candidates << " lattice points to look at, above the "
+        << maxPoints << " this use allows";
+    throw SceneError(msg.str());
+  }
+  std::vector<Point> points;
+  forEachLatticePoint(body.lattice, dim, body.spacing, latticeOrigin(scene, body.shape, dim), bounds,
+                      context, [&](const Point& x) {
+                        bool within = true;
+                        for (int d = 0; d < dim; ++d) within = within && x[d] >= lo[d] && x[d] <= hi[d];
+                        if (within && bodyOwnsPoint(scene, index, x, ignoring)) points.push_back(x);
+                      });
+  return points;
 }
 
 ParticleSet buildParticles(const Scene& scene, const MaterialTable& materials,

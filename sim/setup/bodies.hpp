@@ -42,6 +42,22 @@ std::array<double, 3> applyDeposit(const Scene& scene, std::size_t index,
                                    const std::vector<std::int64_t>& firstIdOfBody, ParticleSet& p,
                                    double time, const Communicator* ranks = nullptr);
 
+// Whether body `index` makes a particle at x, a point of its lattice (or holds x, a point in
+// space): inside its shape and the domain, and not claimed by an earlier body (other than
+// `ignoring`; scene.bodies.size(): none) or an earlier void.
+bool bodyOwnsPoint(const Scene& scene, std::size_t index, const std::array<double, 3>& x,
+                   std::size_t ignoring);
+
+// The lattice points body `index` makes, positions only, as buildParticles places them (inside
+// its shape and the domain, not claimed by an earlier body or void), within [lo, hi] on every
+// axis. `ignoring`: a body whose claim is left out (scene.bodies.size(): none). More than about
+// 2 maxPoints lattice points to look at is a SceneError naming the body (a bound on the work of
+// a scene reader given any text).
+std::vector<std::array<double, 3>> bodyLatticePoints(const Scene& scene, std::size_t index,
+                                                     const std::array<double, 3>& lo,
+                                                     const std::array<double, 3>& hi,
+                                                     std::size_t ignoring, std::size_t maxPoints);
+
 // Volume (area in 2D and RZ, length in 1D) of one lattice cell: cubic s^d, 2D hexagonal
 // s^2 sqrt(3)/2, 3D close packed (face-centred cubic, nearest neighbour s) s^3/sqrt(2).
 double latticeCellVolume(LatticeKind lattice, int dimension, double spacing);

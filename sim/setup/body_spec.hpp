@@ -33,6 +33,13 @@ struct BodySpec {
   std::optional<double> internalEnergy;
   std::array<double, 3> velocity{};         // [m/s]
   double damage = 0.0;                      // initial damage D in [0, 1] (1: rubble)
+  // Resting on another body (`rest_on`): the body is moved along `restDirection` (unit) until the
+  // nearest pair of its particles and that body's is `restGap` of its spacing apart, whatever the
+  // spacing (sim/setup/resting_bodies.hpp). `restMove`: how far it was moved [m], set then.
+  std::string restOn;
+  std::array<double, 3> restDirection{};
+  double restGap = 1.0;
+  double restMove = 0.0;
   int line = 0;
   // Its index among the file's [[bodies]] entries, voids included, for messages; -1: the same
   // as its index in Scene::bodies (a body built in code).

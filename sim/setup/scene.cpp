@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "sim/setup/resting_bodies.hpp"
 #include "sim/setup/scene_sections.hpp"
 
 namespace ejecta {
@@ -29,6 +30,7 @@ Scene validate(const toml::table& doc, const std::string& sourceName) {
   readMaterials(root, scene);
   checkGradientScheme(root, scene);
   readBodies(root, scene);
+  placeRestingBodies(scene);  // before anything reads where the bodies are
   readDeposits(root, scene);
   readDetonations(root, scene);
   readGauges(root, scene);

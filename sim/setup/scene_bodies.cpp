@@ -154,10 +154,41 @@ void readBowl(const TableReader& r, const Scene& scene, BowlSpec& bowl) {
   r.check(bowl.depth > 0.0, "depth", positiveMessage(bowl.depth, m));
 }
 
+// rest_on, rest_direction, rest_gap: where the body is moved to once every body is read
+// (sim/setup/resting_bodies.hpp).
+void readRest(const TableReader& r, const Scene& scene, BodySpec& b) {
+  const int dim = spatialDimension(scene.geometry);
+  if (!r.has("rest_on")) {
+    for (std::string_view k : {"rest_direction", "rest_gap"})
+      r.check(!r.has(k), k, "applies only with rest_on (the body it rests on)");
+    return;
+  }
+  b.restOn = r.requireString("rest_on");
+  r.check(b.shape.kind != ShapeKind::HalfSpace, "rest_on",
+          "a half_space cannot be moved to rest on another body (a box, sphere or shell can)");
+  b.restDirection = {0.0, 0.0, 0.0};
+  b.restDirection[static_cast<std::size_t>(dim - 1)] = -1.0;  // down: -x in 1D, -y in 2D and RZ, -z in 3D
+  if (const auto given = r.optVector("rest_direction", Dimension::None, dim, vectorLayout(scene.geometry))) {
+    double norm = 0.0;
+    for (int d = 0; d < dim; ++d) norm += (*given)[d] * (*given)[d];
+    r.check(norm > 0.0 && std::isfinite(norm), "rest_direction", "must be a finite vector, not zero");
+    for (int d = 0; d < dim; ++d) b.restDirection[d] = (*given)[d] / std::sqrt(norm);
+    if (scene.geometry == Geometry::Axisymmetric)
+      r.check(b.restDirection[0] == 0.0, "rest_direction",
+              "in rz a body can only move along the axis ([0, 1] or [0, -1]): its rings would not stay rings");
+  }
+  // Not below one spacing: nearer, the other body's particles may fall inside this one's shape
+  // (and be carved) before any pair comes within the gap.
+  b.restGap = r.optQuantity("rest_gap", Dimension::None).value_or(1.0);
+  r.check(b.restGap >= 1.0 && b.restGap <= 2.0, "rest_gap",
+          "must be in [1, 2] spacings (1: the two lattices meet as one)");
+}
+
 // A [[bodies]] entry with void = true: a name and a shape, nothing that particles would need.
 void readVoid(const TableReader& r, Scene& scene, int line) {
   for (std::string_view k : {"material", "lattice", "spacing", "density", "pressure",
-                             "internal_energy", "velocity", "damage"})
+                             "internal_energy", "velocity", "damage", "rest_on", "rest_direction",
+                             "rest_gap"})
     r.check(!r.has(k), k, "a void body makes no particles: it takes name, shape and the shape's "
                            "keys only");
   VoidSpec v;
@@ -229,6 +260,7 @@ void readBodies(const TableReader& root, Scene& scene) {
                      .value_or(b.velocity);
     b.damage = r.optQuantity("damage", Dimension::None).value_or(0.0);
     r.check(b.damage >= 0.0 && b.damage <= 1.0, "damage", "must be in [0, 1]");
+    readRest(r, scene, b);
     scene.bodies.push_back(std::move(b));
   }
   if (scene.bodies.empty())

@@ -76,6 +76,16 @@ std::vector<SceneTable> bodyTables() {
         quantity("internal_energy", Dimension::SpecificEnergy, "—", "≥ 0"),
         vectorOf("velocity", Dimension::Velocity, "zero", "initial velocity"),
         number("damage", "0", "initial damage D in [0, 1] (1: rubble, no tension, no shear)"),
+        text("rest_on", "—",
+             "the name of a body listed after it (one that does not rest itself, and on which no other body rests): this body (a box, sphere or shell) is moved "
+             "along `rest_direction` until its nearest particle pair with that body is "
+             "`rest_gap` spacings apart, so the contact is the same at every spacing (a device "
+             "on a crater floor; `sim/setup/resting_bodies.hpp`, docs/asteroid_studies.md)"),
+        vectorOf("rest_direction", Dimension::None, "down",
+                 "with rest_on: the direction it moves in, any length ≠ 0 (down: −x in 1D, −y "
+                 "in 2D and RZ, −z in 3D; in RZ along the axis only)"),
+        number("rest_gap", "1", "with rest_on: the nearest pair's distance in this body's "
+               "spacings, in [1, 2]"),
         boolean("void", "false",
                 "a body with no particles that claims its shape, so the bodies listed after it "
                 "are carved there (a crater, a cavity); it takes `name`, `shape` and the shape's "
