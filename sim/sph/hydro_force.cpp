@@ -134,6 +134,7 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
   }
   MonaghanViscosity<D> viscosity(p, ws, here);
   const ArtificialConductivity conduction(p, sph);
+  if (conduction.enabled()) ws.conductionSignal.resize(nReal);
   std::vector<double> pressureTerm;
   std::optional<StressDivergence<D, RZ>> stress;
   std::optional<ArtificialStress<K, D, RZ>> artificialStress;
@@ -169,6 +170,7 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
       double acc[3] = {0.0, 0.0, 0.0};
       double grad[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};  // -L_i
       double dudtDivergence = 0.0, dudtViscous = 0.0, dudtConduction = 0.0;
+      double signal = 0.0;  // the conductivity's fastest pair signal
       const double* Ci = Iad ? &iad[9 * i] : nullptr;
       const bool iadI = Iad && Ci[0] != 0.0;
 
@@ -210,7 +212,11 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
           }
           dudtViscous += 0.5 * visc * dvA;
           dudtDivergence += g.mj * dvAi;
-          if (conduction.enabled()) dudtConduction += conduction.energyRate(o, g);
+          if (conduction.enabled()) {
+            const auto c = conduction.term(o, g);
+            dudtConduction += c.rate;
+            signal = std::max(signal, c.signal);
+          }
           continue;
         }
         const double fVisc = g.mj * viscosity.coefficient(o, g) * g.dWavg * g.rInv;
@@ -254,8 +260,13 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
           for (int d = 0; d < D; ++d) acc[d] -= f * dx[d];
           dudtDivergence += wGrad * g.vdotx;
         }
-        if (conduction.enabled()) dudtConduction += conduction.energyRate(o, g);
+        if (conduction.enabled()) {
+          const auto c = conduction.term(o, g);
+          dudtConduction += c.rate;
+          signal = std::max(signal, c.signal);
+        }
       }
+      if (conduction.enabled()) ws.conductionSignal[i] = signal;
 
       // Hoop rate v_r / r of RZ, with the smoothed radius near the axis (docs/rz.md).
       const double hoopRate = RZ ? vi[0] * ws.dSmoothedR[i] / ws.smoothedR[i] : 0.0;

@@ -47,6 +47,10 @@ struct HydroWorkspace {
   // Largest h of each real particle (SphOptions::hMaxFactor), or nullptr: h is not capped. The
   // run points it at the particles' column before each pass that sets h.
   const double* hCap = nullptr;
+  // Artificial conductivity: the fastest signal speed v_sig^u of each evaluated real particle's
+  // pairs [m/s] (sim/sph/terms/artificial_conductivity.hpp), for the individual steps' diffusion
+  // limit (sim/run/timestep_criteria.hpp). Written by the force pass only with conductivity on.
+  std::vector<double> conductionSignal;
   // Number of neighbours in each real particle's gather list, the particle itself included
   // (diagnostics, the neighbour check and the decomposition's costs).
   std::vector<std::uint32_t> neighbourCount;

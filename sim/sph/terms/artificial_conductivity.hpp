@@ -19,12 +19,17 @@ class ArtificialConductivity {
 
   bool enabled() const { return alphaU_ > 0.0; }
 
-  // The pair's contribution to du_i/dt [J/(kg s)].
-  double energyRate(const PairOrigin& o, const Pair& g) const {
+  // The pair's contribution to du_i/dt [J/(kg s)] and its signal speed v_sig [m/s] (individual
+  // time steps limit a particle's step by its fastest; sim/run/timestep_criteria.hpp).
+  struct Term {
+    double rate;
+    double signal;
+  };
+  Term term(const PairOrigin& o, const Pair& g) const {
     const std::size_t j = g.j;
     const double rhoIJ = 0.5 * (o.rho + rho_[j]);
     const double vsigU = std::sqrt(std::abs(o.P - P_[j]) / rhoIJ);
-    return g.mj * alphaU_ * vsigU * (o.u - u_[j]) / g.sigmaIJ * g.dWavg;
+    return {g.mj * alphaU_ * vsigU * (o.u - u_[j]) / g.sigmaIJ * g.dWavg, vsigU};
   }
 
  private:

@@ -76,14 +76,14 @@ TEST(VerifyIndividualSteps, Sedov2DMatchesTheSimilaritySolutionAtAFractionOfTheU
 }
 
 TEST(VerifyIndividualSteps, SedovRZTheSeedsCaseMatchesTheSimilaritySolution) {
-  // The seed's case as test_verify_sedov.cpp runs it (20,000 rings, 1,575 global steps).
-  // Measured: L1(rho) 0.244 against global 0.236, energy error 2.3e-3 (global 2.7e-4), 0.072 of
-  // the particle-steps. Bounds: the energy at 3x, the updates at 0.12.
-  // Without the scene's artificial conductivity, as measured: with it, individual steps do not
-  // yet hold these bounds (measured: L1(rho) 0.294 against global 0.249, energy error 1.4e-2,
-  // 0.133 of the particle-steps; docs/time_steps.md, issue 19).
-  const Pair p = runBoth("sedov_rz", {"sph.conductivity.alpha=0"});
-  expectSedovPair(p, 0.03, 0.65, 0.3, 7e-3, 0.12);
+  // The seed's case as test_verify_sedov.cpp runs it (20,000 rings, 803 global steps), with the
+  // scene's artificial conductivity. Its pairs conduct across bins of different lengths; without
+  // the conduction's own step limit (timestep_criteria.hpp) the individual run measured L1(rho)
+  // 0.294 against global 0.237 and an energy error of 1.4e-2. Measured with it: L1(rho) 0.2484
+  // (4.9% above global), energy error 2.1e-3 (global 3.9e-4), 0.18 of the particle-steps.
+  // Bounds: the energy at 3x, the updates at 0.25; L1 within 5% of global (expectSedovPair).
+  const Pair p = runBoth("sedov_rz");
+  expectSedovPair(p, 0.03, 0.65, 0.3, 6.5e-3, 0.25);
 }
 
 TEST(VerifyIndividualSteps, Sedov3DMatchesTheSimilaritySolution) {
