@@ -186,6 +186,17 @@ struct BuildRange {
   std::size_t end = std::numeric_limits<std::size_t>::max();
 };
 
+}  // namespace
+
+std::string bodyContext(const Scene& scene, std::size_t index, const std::string& key) {
+  const BodySpec& body = scene.bodies.at(index);
+  const std::size_t entry = body.entry >= 0 ? static_cast<std::size_t>(body.entry) : index;
+  return where(scene, body.line) + ": key 'bodies[" + std::to_string(entry) + "]" +
+         (key.empty() ? "" : "." + key) + "': body '" + body.name + "'";
+}
+
+namespace {
+
 // Appends the particles of body `index` that fall in `range` (every one by default), their ids
 // their numbers in build order. Returns how many the body has in all.
 std::size_t fillBody(const Scene& scene, const MaterialTable& materials, std::size_t index,
@@ -193,9 +204,7 @@ std::size_t fillBody(const Scene& scene, const MaterialTable& materials, std::si
   const BodySpec& body = scene.bodies[index];
   const int dim = spatialDimension(scene.geometry);
   const bool rz = (scene.geometry == Geometry::Axisymmetric);
-  const std::size_t entry = body.entry >= 0 ? static_cast<std::size_t>(body.entry) : index;
-  const std::string context = where(scene, body.line) + ": key 'bodies[" + std::to_string(entry) +
-                              "]': body '" + body.name + "'";
+  const std::string context = bodyContext(scene, index);
   const double cell = latticeCellVolume(body.lattice, dim, body.spacing);
   const double h = scene.sph.eta * std::pow(cell, 1.0 / dim);
   const double u = initialSpecificEnergy(body, materials, context);
@@ -365,9 +374,7 @@ std::vector<Point> bodyLatticePoints(const Scene& scene, std::size_t index, cons
                                      const Point& hi, std::size_t ignoring, std::size_t maxPoints) {
   const BodySpec& body = scene.bodies.at(index);
   const int dim = spatialDimension(scene.geometry);
-  const std::size_t entry = body.entry >= 0 ? static_cast<std::size_t>(body.entry) : index;
-  const std::string context = where(scene, body.line) + ": key 'bodies[" + std::to_string(entry) +
-                              "]': body '" + body.name + "'";
+  const std::string context = bodyContext(scene, index);
   Bounds bounds = bodyBounds(scene, body.shape, dim);
   for (int d = 0; d < dim; ++d) {
     bounds.lo[d] = std::max(bounds.lo[d], lo[d]);

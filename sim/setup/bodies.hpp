@@ -3,6 +3,7 @@
 // listed before it, then the energy deposits due at t = 0.
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "sim/solid/materials.hpp"
@@ -57,6 +58,10 @@ std::vector<std::array<double, 3>> bodyLatticePoints(const Scene& scene, std::si
                                                      const std::array<double, 3>& lo,
                                                      const std::array<double, 3>& hi,
                                                      std::size_t ignoring, std::size_t maxPoints);
+
+// "FILE:LINE: key 'bodies[i]': body 'NAME'" (with `key`, 'bodies[i].KEY'), i as the scene file
+// numbers its [[bodies]] entries: how an error about body `index` begins.
+std::string bodyContext(const Scene& scene, std::size_t index, const std::string& key = "");
 
 // Volume (area in 2D and RZ, length in 1D) of one lattice cell: cubic s^d, 2D hexagonal
 // s^2 sqrt(3)/2, 3D close packed (face-centred cubic, nearest neighbour s) s^3/sqrt(2).

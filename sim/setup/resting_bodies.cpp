@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <sstream>
 #include <unordered_map>
 #include <vector>
@@ -31,6 +32,9 @@ constexpr std::size_t kMaxRestingPoints = 50'000;
 constexpr std::size_t kMaxNearbyPoints = 1'000'000;
 constexpr long kMaxScanSteps = 10'000;
 constexpr double kMaxPairTries = 2e6;  // its particles near the other body, times the tries
+// A lattice point rebuilt with its moved shape matches the point moved by hand to rounding; a
+// billionth of a spacing is far above that and far below any cut.
+constexpr double kSamePoint = 1e-9;
 
 // The other body's points hashed into cells one gap wide: "is any of them nearer than the gap"
 // looks at the 3^d cells around a point.
@@ -89,14 +93,19 @@ ShapeSpec moved(ShapeSpec shape, const Point& direction, double distance, int di
   return shape;
 }
 
+// Every lattice point body `index` makes, as the build makes them (no window).
+std::vector<Point> everyLatticePoint(const Scene& scene, std::size_t index) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  return bodyLatticePoints(scene, index, {-kInf, -kInf, -kInf}, {kInf, kInf, kInf},
+                           scene.bodies.size(), kMaxRestingPoints);
+}
+
 std::string length(double metres) { return formatQuantity(metres, Dimension::Length); }
 
 void placeOne(Scene& scene, std::size_t index) {
   BodySpec& body = scene.bodies[index];
   const int dim = spatialDimension(scene.geometry);
-  const std::size_t entry = body.entry >= 0 ? static_cast<std::size_t>(body.entry) : index;
-  const std::string key = scene.sourcePath + ":" + std::to_string(body.line) + ": key 'bodies[" +
-                          std::to_string(entry) + "].rest_on': body '" + body.name + "'";
+  const std::string key = bodyContext(scene, index, "rest_on");
   std::size_t target = scene.bodies.size();
   for (std::size_t k = 0; k < scene.bodies.size(); ++k)
     if (scene.bodies[k].name == body.restOn) target = k;
@@ -129,8 +138,7 @@ void placeOne(Scene& scene, std::size_t index) {
 
   std::vector<Point> own, nearby;
   try {
-    const Point below{-INFINITY, -INFINITY, -INFINITY}, above{INFINITY, INFINITY, INFINITY};
-    own = bodyLatticePoints(scene, index, below, above, scene.bodies.size(), kMaxRestingPoints);
+    own = everyLatticePoint(scene, index);
     if (own.empty()) throw SceneError("the body makes no particles where it is placed");
     Point lo = own.front(), hi = own.front();
     for (const Point& x : own)
@@ -143,7 +151,7 @@ void placeOne(Scene& scene, std::size_t index) {
   } catch (const SceneError& e) {
     throw SceneError(key + ": placing it: " + e.what());
   }
-  const std::size_t ownCount = own.size();
+  const std::vector<Point> placed = own;
   // Only its particles that pass within reach of the other body's can meet them: the rest are
   // left out of every try (a coarse look, cells as wide as the reach).
   const double reach = range + gap;
@@ -195,10 +203,14 @@ void placeOne(Scene& scene, std::size_t index) {
   }
   body.shape = moved(body.shape, dir, free, dim);
   body.restMove = free;
-  // Its lattice moved with it; what the build makes there must be those same points (a domain
-  // face, an earlier body or a void it moved against would cut it differently).
-  const Point below{-INFINITY, -INFINITY, -INFINITY}, above{INFINITY, INFINITY, INFINITY};
-  if (bodyLatticePoints(scene, index, below, above, scene.bodies.size(), kMaxRestingPoints).size() != ownCount)
+  // Its lattice moved with it; what the build makes there must be those same points, moved (a
+  // domain face, an earlier body or a void it moved against would cut it differently).
+  const std::vector<Point> resting = everyLatticePoint(scene, index);
+  bool same = resting.size() == placed.size();
+  for (std::size_t k = 0; same && k < resting.size(); ++k)
+    for (int d = 0; d < dim; ++d)
+      same = same && std::abs(resting[k][d] - shifted(placed[k], free)[d]) <= kSamePoint * body.spacing;
+  if (!same)
     throw SceneError(key + ": at its rest (moved " + length(free) + ") a domain face, an earlier body or a void "
                      "cuts it differently than where it was placed; place it clear of them");
 }

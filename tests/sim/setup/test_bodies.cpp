@@ -15,6 +15,7 @@
 
 #include "fields/crater.hpp"
 #include "fields/grid_set.hpp"
+#include "sim/run/run.hpp"
 #include "sim/setup/bodies.hpp"
 
 namespace ejecta {
@@ -608,12 +609,17 @@ double nearestPair(const ParticleSet& p, int a, int dim) {
   return std::sqrt(best);
 }
 
+// The floor the resting bodies meet: a 10 m box, 2D, its top at y = 10.
+std::string floorBox(double spacing = 1.0) {
+  return body("floor", "shape = \"box\"\nmin = [0, 0]\nmax = [10, 10]", spacing, 1.0);
+}
+
 // A disc of its own material over a floor, 2D; `rest` adds the rest keys to the disc.
 std::string discOnFloor(double spacing, const std::string& rest) {
   return sceneText("2d", "[[materials]]\nname = \"disc\"\ngamma = 1.4\n") +
          "[[bodies]]\nname = \"disc\"\nmaterial = \"disc\"\nshape = \"sphere\"\ncenter = [5.3, 12]\n"
          "radius = 2\nspacing = " + std::to_string(spacing) + "\ndensity = 1\npressure = 1\n" + rest +
-         body("floor", "shape = \"box\"\nmin = [0, 0]\nmax = [10, 10]", spacing, 1.0);
+         floorBox(spacing);
 }
 
 TEST(RestingBodies, ADiscComesToRestOneSpacingAboveTheFloorWorkedByHand) {
@@ -637,6 +643,18 @@ TEST(RestingBodies, ADiscComesToRestOneSpacingAboveTheFloorWorkedByHand) {
   const Scene up = parseScene(ceiling, "t.toml");
   EXPECT_GT(up.bodies[0].restMove, 0.0);
   EXPECT_NEAR(nearestPair(build(up), 1, 2), 0.5, 1e-12);
+}
+
+TEST(RestingBodies, TheRunsSummaryGivesHowFarEachRestingBodyMoved) {
+  // summary.json's rest_move_<body>_m is the move the worked case above gives, for the body
+  // that rests and for no other.
+  const Scene s = parseScene(discOnFloor(1.0, "rest_on = \"floor\"\n"), "t.toml", {"time.t_end=1e-9"});
+  RunOptions options;
+  options.threads = 1;
+  const RunOutcome r = runScene(s, options);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_NEAR(r.summary.number("rest_move_disc_m"), 1.0 - std::sqrt(1.0 - 0.09), 1e-12);
+  EXPECT_FALSE(r.summary.has("rest_move_floor_m"));
 }
 
 TEST(RestingBodies, TheCraterFloorDeviceMeetsTheFloorAtOneSpacingAtEverySpacing) {
@@ -680,51 +698,51 @@ TEST(RestingBodies, ErrorsNameTheKeyAndTheReason) {
               "key 'bodies[0].rest_direction': must be a finite vector, not zero");
   // Too far above the floor to be resting on it (4 spacings of search), or already inside it.
   expectError(sceneText("2d", "") + body("disc", "shape = \"sphere\"\ncenter = [5, 20]\nradius = 2\nrest_on = \"floor\"", 1.0, 1.0) +
-                  body("floor", "shape = \"box\"\nmin = [0, 0]\nmax = [10, 10]", 1.0, 1.0),
+                  floorBox(),
               "meets nothing of 'floor' within 4 m along rest_direction");
   expectError(sceneText("2d", "") + body("disc", "shape = \"sphere\"\ncenter = [5, 5]\nradius = 2\nrest_on = \"floor\"", 1.0, 1.0) +
-                  body("floor", "shape = \"box\"\nmin = [0, 0]\nmax = [10, 10]", 1.0, 1.0),
+                  floorBox(),
               "or inside it, even 4 m back against rest_direction");
   // One body on another, no chains; a body the domain cuts differently at its rest.
   expectError(sceneText("2d", "") +
                   body("a", "shape = \"sphere\"\ncenter = [5, 16]\nradius = 1\nrest_on = \"b\"", 1.0, 1.0) +
                   body("b", "shape = \"sphere\"\ncenter = [5, 12]\nradius = 2\nrest_on = \"floor\"", 1.0, 1.0) +
-                  body("floor", "shape = \"box\"\nmin = [0, 0]\nmax = [10, 10]", 1.0, 1.0),
+                  floorBox(),
               "'b' rests on a body itself");
   expectError(sceneText("2d", "") +
                   body("a", "shape = \"sphere\"\ncenter = [2.3, 12]\nradius = 1\nrest_on = \"floor\"", 1.0, 1.0) +
                   body("b", "shape = \"sphere\"\ncenter = [7.3, 12]\nradius = 2\nrest_on = \"floor\"", 1.0, 1.0) +
-                  body("floor", "shape = \"box\"\nmin = [0, 0]\nmax = [10, 10]", 1.0, 1.0),
+                  floorBox(),
               "key 'bodies[1].rest_on': body 'b': 'a' rests on 'floor' already");
   // The disc's row at y = 12.5 is outside a domain that ends at 12.48, and inside it once the
   // disc has moved down 0.046 m (the hand-worked case above).
   expectError(sceneText("2d", "[domain]\ny = { min = -1, max = 12.48 }\n[[materials]]\nname = \"disc\"\ngamma = 1.4\n") +
                   "[[bodies]]\nname = \"disc\"\nmaterial = \"disc\"\nshape = \"sphere\"\ncenter = [5.3, 12]\n"
                   "radius = 2\nspacing = 1\ndensity = 1\npressure = 1\nrest_on = \"floor\"\n" +
-                  body("floor", "shape = \"box\"\nmin = [0, 0]\nmax = [10, 10]", 1.0, 1.0),
+                  floorBox(),
               "cuts it differently than where it was placed");
   // Bounds on the work of a reader given any text: a resting body far finer than the other, or
   // with more particles than a device or an impactor has.
   expectError(sceneText("2d", "") + body("disc", "shape = \"sphere\"\ncenter = [5, 12]\nradius = 2\nrest_on = \"floor\"", 0.001, 1.0) +
-                  body("floor", "shape = \"box\"\nmin = [0, 0]\nmax = [10, 10]", 1.0, 1.0),
+                  floorBox(),
               "is too fine beside 'floor''s");
   expectError(sceneText("2d", "") + body("disc", "shape = \"sphere\"\ncenter = [5, 12]\nradius = 2\nrest_on = \"floor\"", 0.005, 1.0) +
                   body("floor", "shape = \"box\"\nmin = [0, 0]\nmax = [10, 10]", 0.005, 1.0),
               "key 'bodies[0].rest_on': body 'disc': placing it: t.toml:");
   // The resting body claims its place: it must come first.
-  expectError(sceneText("2d", "") + body("floor", "shape = \"box\"\nmin = [0, 0]\nmax = [10, 10]", 1.0, 1.0) +
+  expectError(sceneText("2d", "") + floorBox() +
                   body("disc", "shape = \"sphere\"\ncenter = [5, 12]\nradius = 2\nrest_on = \"floor\"", 1.0, 1.0),
               "list it before 'floor'");
   expectError(sceneText("2d", "") + voidBody("pit", "shape = \"sphere\"\ncenter = [5, 10]\nradius = 1") +
                   body("disc", "shape = \"sphere\"\ncenter = [5, 12]\nradius = 2\nrest_on = \"pit\"", 1.0, 1.0) +
-                  body("floor", "shape = \"box\"\nmin = [0, 0]\nmax = [10, 10]", 1.0, 1.0),
+                  floorBox(),
               "'pit' is a void body");
   expectError(sceneText("2d", "[domain]\nx = { min = -20, max = 20 }\ny = { min = -20, max = 20 }\n") +
                   body("ground", "shape = \"half_space\"\npoint = [0, 0]\nnormal = [0, 1]\nrest_on = \"floor\"", 1.0, 1.0) +
-                  body("floor", "shape = \"box\"\nmin = [0, 0]\nmax = [10, 10]", 1.0, 1.0),
+                  floorBox(),
               "a half_space cannot be moved");
   expectError(sceneText("rz", "") + body("ball", "shape = \"sphere\"\ncenter = [0, 12]\nradius = 2\nrest_on = \"floor\"\nrest_direction = [1, -1]", 1.0, 1.0) +
-                  body("floor", "shape = \"box\"\nmin = [0, 0]\nmax = [10, 10]", 1.0, 1.0),
+                  floorBox(),
               "in rz a body can only move along the axis");
 }
 
