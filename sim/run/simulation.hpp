@@ -191,8 +191,9 @@ class Simulation {
   // the key).
   void measureClosingSpeeds(const std::vector<std::size_t>* active);
   double closingSpeedOf(std::size_t i) const;
-  // Individual steps: the artificial conductivity's limit on particle i's step from its last
-  // evaluation (timestep_criteria.hpp; infinity without conductivity).
+  // Individual steps: the artificial conductivity's limit on particle i's step from the
+  // evaluation just made (timestep_criteria.hpp; infinity without conductivity). Only then: the
+  // workspace's signals are not reordered with the particles (sortForLocality, rebalance).
   double conductionTimestepOf(std::size_t i) const;
   // After the listed particles' steps ended: their new bins (the limiter's floor from their
   // neighbours) and the wake-up of neighbours on too long a step.

@@ -46,8 +46,9 @@ double closingSpeed(std::size_t i, const Pairs& pairs, const Columns& x, const C
 // courant h / (kConductionSignalFactor alpha_u v_sig^u). With global steps every pair's exchange
 // is summed by both sides over the same step and conserved; on time bins the two sides of a pair
 // integrate it over steps of different lengths, and energy appears unless the particles that
-// conduct step at the conduction's own pace. (A limit from the particle's own coupling, an
-// explicit diffusion's stability dt < 1 / sum_j kappa_ij, never bound.) The factor was measured
+// conduct step at the conduction's own pace. (A limit from the particle's own coupling,
+// dt < 0.3 / sum_j kappa_ij within an explicit diffusion's stability bound 1 / sum_j kappa_ij,
+// never bound.) The factor was measured
 // on the seed's RZ Sedov
 // (docs/time_steps.md): L1(rho) 0.292, 0.258, 0.254, 0.248, 0.248 at factors 1, 2, 3, 4, 6
 // (global steps 0.237); 4 is the smallest past which the error no longer falls.

@@ -35,6 +35,7 @@ constexpr double kMaxPairTries = 2e6;  // its particles near the other body, tim
 // A lattice point rebuilt with its moved shape matches the point moved by hand to rounding; a
 // billionth of a spacing is far above that and far below any cut.
 constexpr double kSamePoint = 1e-9;
+constexpr double kRounding = 8.0 * std::numeric_limits<double>::epsilon();  // of a coordinate far out
 
 // The other body's points hashed into cells one gap wide: "is any of them nearer than the gap"
 // looks at the 3^d cells around a point.
@@ -209,7 +210,8 @@ void placeOne(Scene& scene, std::size_t index) {
   bool same = resting.size() == placed.size();
   for (std::size_t k = 0; same && k < resting.size(); ++k)
     for (int d = 0; d < dim; ++d)
-      same = same && std::abs(resting[k][d] - shifted(placed[k], free)[d]) <= kSamePoint * body.spacing;
+      same = same && std::abs(resting[k][d] - shifted(placed[k], free)[d]) <=
+                         kSamePoint * body.spacing + kRounding * std::abs(resting[k][d]);
   if (!same)
     throw SceneError(key + ": at its rest (moved " + length(free) + ") a domain face, an earlier body or a void "
                      "cuts it differently than where it was placed; place it clear of them");

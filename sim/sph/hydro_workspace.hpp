@@ -49,7 +49,8 @@ struct HydroWorkspace {
   const double* hCap = nullptr;
   // Artificial conductivity: the fastest signal speed v_sig^u of each evaluated real particle's
   // pairs [m/s] (sim/sph/terms/artificial_conductivity.hpp), for the individual steps' diffusion
-  // limit (sim/run/timestep_criteria.hpp). Written by the force pass only with conductivity on.
+  // limit (sim/run/timestep_criteria.hpp). Written by the force pass only with conductivity on,
+  // and read right after it: a reorder of the particles does not carry it along.
   std::vector<double> conductionSignal;
   // Number of neighbours in each real particle's gather list, the particle itself included
   // (diagnostics, the neighbour check and the decomposition's costs).
