@@ -41,18 +41,18 @@ double closingSpeed(std::size_t i, const Pairs& pairs, const Columns& x, const C
   return fastest;
 }
 
-// Individual time steps with artificial conductivity: the step of a particle whose pairs conduct
-// at signal speed v_sig^u (Price 2008; the fastest of its pairs) is held to
+// Individual time steps with artificial conductivity: the step of a particle that its pairs heat
+// at signal speed v_sig^u (Price 2008; the fastest of the pairs with u_j > u_i) is held to
 // courant h / (kConductionSignalFactor alpha_u v_sig^u). With global steps every pair's exchange
 // is summed by both sides over the same step and conserved; on time bins the two sides of a pair
-// integrate it over steps of different lengths, and energy appears unless the particles that
-// conduct step at the conduction's own pace. (A limit from the particle's own coupling,
-// dt < 0.3 / sum_j kappa_ij within an explicit diffusion's stability bound 1 / sum_j kappa_ij,
-// never bound.) The factor was measured
-// on the seed's RZ Sedov
-// (docs/time_steps.md): L1(rho) 0.292, 0.258, 0.254, 0.248, 0.248 at factors 1, 2, 3, 4, 6
-// (global steps 0.237); 4 is the smallest past which the error no longer falls.
-constexpr double kConductionSignalFactor = 4.0;
+// integrate it over steps of different lengths, and energy appears unless the particle that
+// takes the heat, whose u it changes the most, steps at the conduction's own pace. Measured on
+// the seed's RZ Sedov (docs/time_steps.md; global steps L1(rho) 0.237): factor 4 gives 0.242 and
+// an energy error of 9e-4 at 0.15 of the global run's particle-steps. Limiting both sides of
+// every pair instead gave 0.248 and 2.1e-3 for more particle-steps; the particle's own
+// coupling, dt < 0.3 / sum_j kappa_ij (an explicit diffusion's stability is 1 / sum), never
+// bound.
+constexpr double kConductionSignalFactor = 4.0;  // docs/time_steps.md: 1, 2, 3, 4, 6 measured
 
 inline double conductionTimestep(const SphOptions& sph, double h, double signal) {
   const double speed = kConductionSignalFactor * sph.conductivity * signal;

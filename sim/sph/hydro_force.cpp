@@ -170,7 +170,7 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
       double acc[3] = {0.0, 0.0, 0.0};
       double grad[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};  // -L_i
       double dudtDivergence = 0.0, dudtViscous = 0.0, dudtConduction = 0.0;
-      double signal = 0.0;  // the conductivity's fastest pair signal
+      double signal = 0.0;  // the conductivity's fastest pair signal heating i
       const double* Ci = Iad ? &iad[9 * i] : nullptr;
       const bool iadI = Iad && Ci[0] != 0.0;
 
@@ -215,7 +215,7 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
           if (conduction.enabled()) {
             const auto c = conduction.term(o, g);
             dudtConduction += c.rate;
-            signal = std::max(signal, c.signal);
+            signal = std::max(signal, c.inflowSignal);
           }
           continue;
         }
@@ -263,7 +263,7 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
         if (conduction.enabled()) {
           const auto c = conduction.term(o, g);
           dudtConduction += c.rate;
-          signal = std::max(signal, c.signal);
+          signal = std::max(signal, c.inflowSignal);
         }
       }
       if (conduction.enabled()) ws.conductionSignal[i] = signal;

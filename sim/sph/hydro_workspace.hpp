@@ -47,8 +47,8 @@ struct HydroWorkspace {
   // Largest h of each real particle (SphOptions::hMaxFactor), or nullptr: h is not capped. The
   // run points it at the particles' column before each pass that sets h.
   const double* hCap = nullptr;
-  // Artificial conductivity: the fastest signal speed v_sig^u of each evaluated real particle's
-  // pairs [m/s] (sim/sph/terms/artificial_conductivity.hpp), for the individual steps' diffusion
+  // Artificial conductivity: the fastest signal speed v_sig^u of the pairs that heat each
+  // evaluated real particle [m/s] (sim/sph/terms/artificial_conductivity.hpp), for the individual steps' diffusion
   // limit (sim/run/timestep_criteria.hpp). Written by the force pass only with conductivity on,
   // and read right after it: a reorder of the particles does not carry it along.
   std::vector<double> conductionSignal;

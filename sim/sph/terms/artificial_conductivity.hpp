@@ -19,17 +19,18 @@ class ArtificialConductivity {
 
   bool enabled() const { return alphaU_ > 0.0; }
 
-  // The pair's contribution to du_i/dt [J/(kg s)] and its signal speed v_sig [m/s] (individual
-  // time steps limit a particle's step by its fastest; sim/run/timestep_criteria.hpp).
+  // The pair's contribution to du_i/dt [J/(kg s)], and its signal speed v_sig [m/s] where the
+  // pair heats i (u_j > u_i; 0 otherwise): individual time steps limit the step of a particle
+  // that conducts heat in by its fastest (sim/run/timestep_criteria.hpp).
   struct Term {
     double rate;
-    double signal;
+    double inflowSignal;
   };
   Term term(const PairOrigin& o, const Pair& g) const {
     const std::size_t j = g.j;
     const double rhoIJ = 0.5 * (o.rho + rho_[j]);
     const double vsigU = std::sqrt(std::abs(o.P - P_[j]) / rhoIJ);
-    return {g.mj * alphaU_ * vsigU * (o.u - u_[j]) / g.sigmaIJ * g.dWavg, vsigU};
+    return {g.mj * alphaU_ * vsigU * (o.u - u_[j]) / g.sigmaIJ * g.dWavg, u_[j] > o.u ? vsigU : 0.0};
   }
 
  private:
