@@ -12,6 +12,7 @@
 //                      [--stepping global|individual] [--limiter-factor F]
 //                      [--alpha A] [--beta B] [--switch none|morris_monaghan]
 //                      [--reconstruction none|monotone|van_leer] [--gradients kernel|iad]
+//                      [--volume-exponent P]   (generalised volume elements X = (m/rho)^P)
 //   ejecta_bench_sedov --chart DIR [--threads T]
 //
 // --chart: the accuracy-for-cost chart of issue 19: the kernel gradient (the default), with
@@ -50,6 +51,7 @@ struct Config {
   std::string kernel = "cubic_spline", stepping = "global", viscositySwitch = "none",
               reconstruction = "none", gradients = "kernel";
   int limiterFactor = 2;
+  double volumeExponent = std::nan("");  // unset: the standard (mass) volumes
 };
 
 struct Result {
@@ -87,6 +89,12 @@ std::string configure(const Config& c, Scene& scene) {
   if (c.gradients != "kernel" && c.gradients != "iad")
     return "--gradients must be kernel or iad, not " + c.gradients;
   scene.sph.gradients = c.gradients == "iad" ? GradientScheme::IntegralApproach : GradientScheme::Kernel;
+  if (!std::isnan(c.volumeExponent)) {
+    if (!(c.volumeExponent >= 0.0 && c.volumeExponent <= 1.0))
+      return "--volume-exponent must lie in [0, 1]";
+    scene.sph.volumeElements = VolumeElements::Generalised;
+    scene.sph.volumeExponent = c.volumeExponent;
+  }
   scene.time.tEnd = c.tEnd;
   if (c.stepping != "global" && c.stepping != "individual")
     return "--stepping must be global or individual, not " + c.stepping;
@@ -240,6 +248,7 @@ int main(int argc, char** argv) {
     else if (arg == "--switch") c.viscositySwitch = next();
     else if (arg == "--reconstruction") c.reconstruction = next();
     else if (arg == "--gradients") c.gradients = next();
+    else if (arg == "--volume-exponent") c.volumeExponent = std::atof(next());
     else if (arg == "--chart") chartDir = next();
     else { std::fprintf(stderr, "unknown option %s\n", arg.c_str()); return 2; }
   }

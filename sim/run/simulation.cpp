@@ -89,7 +89,7 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
       ws_(scene_.sph, scene_.geometry) {
   if (domain_.comm().sum(p_.numReal) == 0)
     throw SimulationError("scene '" + scene_.name + "' has no particles");
-  refuseUnbuiltGradients();
+  refuseUnbuiltSphOptions();
   // A particle with 30x the neighbours its kernel should hold (the volume of the support in
   // particle volumes: 2 kappa eta, pi (kappa eta)^2, 4/3 pi (kappa eta)^3) has an h that stopped
   // tracking its density (the seed's dh/dt or constant h in a strong expansion); its pair loop
@@ -369,8 +369,13 @@ void Simulation::evaluateDerivatives(const std::vector<std::size_t>* active) {
   const bool distributed = domain_.distributed();
   const Communicator& ranks = domain_.comm();
   double margin = kGhostMargin;
+  // Generalised volumes: the weights from the densities before the pass, through all its tries.
+  const bool generalised = scene_.sph.volumeElements == VolumeElements::Generalised;
+  const std::vector<double> volumeWeights =
+      generalised ? volumeWeightsOf(p_, scene_.sph.volumeExponent) : std::vector<double>();
   for (int attempt = 0;; ++attempt) {
     boundaries_.makeGhosts(p_, kKernelSupport * margin, distributed ? &ranks : nullptr);
+    if (generalised) placeVolumeWeights(p_, volumeWeights, ws_);
     // Other ranks' particles (and their images) within reach of this rank's.
     if (distributed) domain_.buildHalos(p_, kKernelSupport * margin);
     // Cells about one (typical) kernel support across.
@@ -464,22 +469,37 @@ void Simulation::evaluateDerivatives(const std::vector<std::size_t>* active) {
   measureClosingSpeeds(active);
 }
 
-void Simulation::refuseUnbuiltGradients() const {
+void Simulation::refuseUnbuiltSphOptions() const {
   // The scene reader refuses these with the line (sim/setup/scene_run_sections.cpp); scenes built
   // in code (benches, tests) and the rank count reach only here.
   const SphOptions& sph = scene_.sph;
+  const std::string where =
+      scene_.sourcePath.empty() ? "scene '" + scene_.name + "'" : scene_.sourcePath;
+  // What neither option is built for. (The materials, not the particles' stress columns: those
+  // are added by the strength package after this check.)
+  const bool solid = materials_.anyStrength() || materials_.anyFracture();
+  auto unbuilt = [&](const std::string& oneRank) -> std::string {
+    if (domain_.distributed()) return oneRank;
+    if (scene_.geometry == Geometry::Axisymmetric) return "is built for 1D, 2D and 3D, not RZ";
+    if (solid) return "is built for fluids (a material here has strength or fracture)";
+    if (sph.form != MomentumForm::Lagrangian) return "takes the Lagrangian form";
+    if (sph.density != DensityMethod::Summation) return "takes summation density";
+    if (scene_.time.stepping != Stepping::Global) return "runs with global time steps";
+    return "";
+  };
+  if (sph.volumeElements == VolumeElements::Generalised) {
+    std::string why = unbuilt("runs on one rank (the halos do not carry the weights)");
+    if (why.empty() && sph.gradients != GradientScheme::Kernel) why = "takes the kernel gradient";
+    if (!why.empty())
+      throw SimulationError(where + ": key 'sph.volume_elements': \"generalised\" " + why +
+                            "; use volume_elements = \"mass\"");
+  }
   if (sph.gradients != GradientScheme::IntegralApproach) return;
-  std::string why;
-  if (domain_.distributed())
-    why = "runs on one rank (its matrices need the halos' densities before the force pass)";
-  else if (scene_.geometry == Geometry::Axisymmetric) why = "is built for 1D, 2D and 3D, not RZ";
-  else if (p_.stressComponents() > 0) why = "is built for fluids (a material here has strength or fracture)";
-  else if (sph.form != MomentumForm::Lagrangian) why = "takes the Lagrangian form";
-  else if (sph.density != DensityMethod::Summation) why = "takes summation density";
-  else if (scene_.time.stepping != Stepping::Global) why = "runs with global time steps";
+  const std::string why =
+      unbuilt("runs on one rank (its matrices need the halos' densities before the force pass)");
   if (!why.empty())
-    throw SimulationError((scene_.sourcePath.empty() ? "scene '" + scene_.name + "'" : scene_.sourcePath) +
-                          ": key 'sph.gradients': \"iad\" " + why + "; use gradients = \"kernel\"");
+    throw SimulationError(where + ": key 'sph.gradients': \"iad\" " + why +
+                          "; use gradients = \"kernel\"");
 }
 
 void Simulation::smoothingLengthFromDensity() {

@@ -153,9 +153,10 @@ class Simulation {
     return i < ws_.lists.pairedParticles() && ws_.lists.pairs(i).size() <= 1;  // itself alone
   }
   // h from the continuity density (SmoothingLengthMethod::Neighbours), held at the caps.
-  // Throws where sph.gradients = "iad" is not built (sim/sph/iad_matrix.hpp): more than one
-  // rank, RZ, solids, the interface form, continuity density, individual steps.
-  void refuseUnbuiltGradients() const;
+  // Throws where sph.gradients = "iad" (sim/sph/iad_matrix.hpp) or sph.volume_elements =
+  // "generalised" is not built: more than one rank, RZ, solids, the interface form, continuity
+  // density, individual steps; and the two together.
+  void refuseUnbuiltSphOptions() const;
   void smoothingLengthFromDensity();
   // sph.h_max_factor's package (null when h is not capped).
   std::shared_ptr<SmoothingLengthCapPackage> hCaps_;

@@ -29,6 +29,7 @@ Scene validate(const toml::table& doc, const std::string& sourceName) {
   readOutput(root, scene.output, scene.time.tEnd);
   readMaterials(root, scene);
   checkGradientScheme(root, scene);
+  checkVolumeElements(root, scene);
   readBodies(root, scene);
   placeRestingBodies(scene);  // before anything reads where the bodies are
   readDeposits(root, scene);

@@ -163,6 +163,23 @@ void readSph(const TableReader& root, SphOptions& sph) {
     r.check(sph.density == DensityMethod::Summation, "gradients",
             "\"iad\" takes summation density (continuity density's rate is not built for it)");
   }
+  sph.volumeElements = r.optEnum<VolumeElements>("volume_elements",
+                                                  {{"mass", VolumeElements::Mass},
+                                                   {"generalised", VolumeElements::Generalised}})
+                           .value_or(sph.volumeElements);
+  sph.volumeExponent = r.optQuantity("volume_exponent", one).value_or(sph.volumeExponent);
+  r.check(sph.volumeExponent >= 0.0 && sph.volumeExponent <= 1.0, "volume_exponent",
+          "p of X = (m/rho)^p must lie in [0, 1] (0: X = 1, volumes 1/sum W; 1: the previous "
+          "step's own volumes), got " + formatQuantity(sph.volumeExponent, one));
+  if (sph.volumeElements == VolumeElements::Generalised) {
+    r.check(sph.form == MomentumForm::Lagrangian, "volume_elements",
+            "\"generalised\" takes the Lagrangian form (form = \"interface\" is not built for it)");
+    r.check(sph.density == DensityMethod::Summation, "volume_elements",
+            "\"generalised\" takes summation density (its volumes are kernel sums)");
+    r.check(sph.gradients == GradientScheme::Kernel, "volume_elements",
+            "\"generalised\" takes the kernel gradient: with gradients = \"iad\" it ran away "
+            "(a particle at 1e12 m/s in a periodic 2D blast, docs/verification.md)");
+  }
   if (const toml::table* at = r.optTable("artificial_stress")) {
     const TableReader a(root.context(), *at, "sph.artificial_stress", "sph.artificial_stress");
     sph.artificialStress = a.optQuantity("epsilon", one).value_or(sph.artificialStress);
@@ -221,6 +238,20 @@ void readOutput(const TableReader& root, OutputOptions& out, double tEnd) {
   out.snapshots = r.optBool("snapshots").value_or(out.snapshots);
 }
 
+
+void checkVolumeElements(const TableReader& root, const Scene& scene) {
+  if (scene.sph.volumeElements != VolumeElements::Generalised) return;
+  const TableReader sph(root.context(), *root.optTable("sph"), "sph", "sph");
+  sph.check(scene.geometry != Geometry::Axisymmetric, "volume_elements",
+            "\"generalised\" is built for 1D, 2D and 3D, not RZ (the ring masses' form is not)");
+  sph.check(scene.time.stepping == Stepping::Global, "volume_elements",
+            "\"generalised\" runs with global time steps (time.stepping = \"global\"): the "
+            "weights of particles between their steps are not kept");
+  for (const MaterialSpec& m : scene.materials)
+    sph.check(!m.strength.present && !m.fracture.present, "volume_elements",
+              "\"generalised\" is built for fluids; material '" + m.name +
+                  "' has strength or fracture (the stress divergence keeps the mass volumes)");
+}
 
 void checkGradientScheme(const TableReader& root, const Scene& scene) {
   if (scene.sph.gradients != GradientScheme::IntegralApproach) return;

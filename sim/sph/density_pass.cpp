@@ -27,9 +27,10 @@ double powD(double x) {
   else return x * x * x;
 }
 
-// Sum of m_j W and m_j dW/dh over the candidates within the support of h.
+// Sum of m_j W and m_j dW/dh over the candidates within the support of h (m_j r_j with the
+// generalised volumes' weights r, when given).
 template <template <int> class K, int D>
-void kernelSums(const ParticleSet& p, const std::vector<std::uint32_t>& cand,
+void kernelSums(const ParticleSet& p, const double* weight, const std::vector<std::uint32_t>& cand,
                 const std::vector<double>& dist2, double h, double& S, double& dS) {
   S = 0.0;
   dS = 0.0;
@@ -40,7 +41,7 @@ void kernelSums(const ParticleSet& p, const std::vector<std::uint32_t>& cand,
   for (std::size_t k = 0; k < cand.size(); ++k) {
     if (dist2[k] >= reach2) continue;
     const double r = std::sqrt(dist2[k]);
-    const double m = p.mass[cand[k]];
+    const double m = weight ? p.mass[cand[k]] * weight[cand[k]] : p.mass[cand[k]];
     double w, dw;
     K<D>::shape(r * hInv, w, dw);
     S += m * w;
@@ -62,6 +63,11 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
   const double etaD = powD<D>(sph.eta);
   const bool gradient = sph.viscosityReconstruction != ViscosityReconstruction::None;
   const bool monotone = sph.viscosityReconstruction == ViscosityReconstruction::Monotone;
+  // Generalised volumes (1D/2D/3D, summation density): every sum below weighs j by m_j r_j in
+  // place of m_j, so it is sum_j X_j W = X_i / V_i scaled by m_i / X_i; rho_i = S / r_i.
+  const double* weight = ws.volumeWeight.empty() ? nullptr : ws.volumeWeight.data();
+  if (weight && ws.volumeWeight.size() < p.size())
+    throw std::logic_error("generalised volumes: a weight for every particle, ghosts included");
   std::size_t failedIndex = nReal;  // lowest failing index (a min reduction: schedule-proof)
   const std::size_t count = active ? active->size() : nReal;
 
@@ -78,7 +84,7 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
     for (std::size_t at = 0; at < count; ++at) {
       const std::size_t i = active ? (*active)[at] : at;
       const double xi[3] = {p.x[0][i], p.x[1][i], p.x[2][i]};
-      const double mi = p.mass[i];
+      const double mi = weight ? p.mass[i] * weight[i] : p.mass[i];
       const double hCap = ws.hCap ? ws.hCap[i] : std::numeric_limits<double>::infinity();
       const double hStart = std::min(p.h[i], hCap);
       double h = hStart;
@@ -103,7 +109,7 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
         // Newton iteration on f(h) = S(h) - m (eta/h)^D.
         for (int it = 0; it < kNewtonMaxIterations; ++it) {
           double S, dS;
-          kernelSums<K, D>(p, cand, dist2, h, S, dS);
+          kernelSums<K, D>(p, weight, cand, dist2, h, S, dS);
           const double target = mi * etaD / powD<D>(h);
           const double f = S - target;
           const double fp = dS + D * target / h;
@@ -134,7 +140,7 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
         const double r = std::sqrt(dist2[k]);
         const std::uint32_t j = cand[k];
         list.push_back(j);
-        const double m = p.mass[j];
+        const double m = weight ? p.mass[j] * weight[j] : p.mass[j];
         double w, dw;
         K<D>::shape(r * hInv, w, dw);
         S += m * w;
@@ -201,6 +207,7 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
       if (summation) {
         sigma = S;
         p.rho[i] = RZ ? S / (2.0 * std::numbers::pi * rt) : S;
+        if (weight) p.rho[i] /= weight[i];  // m_i sum_j X_j W / X_i
       } else {
         sigma = RZ ? 2.0 * std::numbers::pi * rt * p.rho[i] : p.rho[i];
       }
@@ -273,6 +280,21 @@ std::optional<std::size_t> runDensityPass(ParticleSet& p, HydroWorkspace& ws,
   return dispatchHydro(ws, [&]<template <int> class K, int D, bool RZ>() {
     return densityPassImpl<K, D, RZ>(p, ws, active);
   });
+}
+
+std::vector<double> volumeWeightsOf(const ParticleSet& p, double exponent) {
+  std::vector<double> r(p.numReal);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.numReal; ++i)
+    r[i] = std::pow(p.mass[i], exponent - 1.0) * std::pow(p.rho[i], -exponent);
+  return r;
+}
+
+void placeVolumeWeights(const ParticleSet& p, const std::vector<double>& real, HydroWorkspace& ws) {
+  ws.volumeWeight.resize(p.size());
+  std::copy(real.begin(), real.end(), ws.volumeWeight.begin());
+  for (std::size_t g = p.numReal; g < p.size(); ++g)
+    ws.volumeWeight[g] = real[p.ghostSource[g - p.numReal]];
 }
 
 void setSmoothingFromDensity(ParticleSet& p, const HydroWorkspace& ws) {

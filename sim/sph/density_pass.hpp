@@ -10,6 +10,9 @@
 //              summation by Newton iteration (Springel & Hernquist 2002; Price 2012, sec. 2.4);
 //              omega_i = 1 + h_i / (d rho_i) sum_j m_j dW/dh.
 // Smoothing length "seed": dh/dt = -h/(rho d) d rho/dt (eq. 1.3), applied with relaxation theta.
+// Generalised volume elements (SphOptions::volumeElements; Hopkins 2013): every m_j above is
+//              X_j = m_j r_j, r = (m / rho)^p / m from the density before the pass, so that
+//              rho_i = m_i sum_j X_j W / X_i and h_i = eta_h (X_i / sum_j X_j W)^(1/d).
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -32,6 +35,13 @@ std::optional<std::size_t> runDensityPass(ParticleSet& p, HydroWorkspace& ws,
 inline bool densityPassSetsSmoothingLength(const SphOptions& sph) {
   return sph.density == DensityMethod::Summation && sph.smoothingLength == SmoothingLengthMethod::Neighbours;
 }
+
+// Generalised volume elements: r_i = X_i / m_i = m_i^(p-1) rho_i^(-p) of every real particle from
+// its present density (p = sph.volumeExponent), then of every boundary ghost from its source,
+// into ws.volumeWeight (the density and force passes read it). `real` keeps the real particles'
+// values across a pass that is repeated with wider ghost layers.
+std::vector<double> volumeWeightsOf(const ParticleSet& p, double exponent);
+void placeVolumeWeights(const ParticleSet& p, const std::vector<double>& real, HydroWorkspace& ws);
 
 // Smoothing length for the "neighbours" method from a density (continuity mode): h from the
 // particle's own mass and density, held at its cap (HydroWorkspace::hCap).

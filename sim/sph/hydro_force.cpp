@@ -16,6 +16,13 @@
 // the kernel gradient's, the mean vector need not point along x_ij, so a single approaching pair
 // may heat or cool by its viscosity (SPH-EXA clips each particle's viscous heating at zero, giving
 // up exact energy conservation; ejecta keeps the conservation).
+// With sph.volume_elements = "generalised" (fluids, Lagrangian form, kernel gradient) the
+// volumes are V = X / sum_j X_j W (Hopkins 2013, MNRAS 428, 2840), and the pressure pair term of
+// i weighs r_j / r_i, j's r_i / r_j (r = X / m):
+//   a_i = -sum_j m_j [(r_j/r_i) P_i/(Omega_i rho_i^2) grad W(h_i)
+//                     + (r_i/r_j) P_j/(Omega_j rho_j^2) grad W(h_j)],
+// with the energy equation to match. It is the
+// Lagrangian derivation with X held fixed through the step, still antisymmetric in each pair.
 #include "sim/sph/hydro_force.hpp"
 
 #include "sim/solid/porosity.hpp"
@@ -143,6 +150,12 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
     artificialStress.emplace(p, ws, here);
   }
   const double* iad = Iad ? ws.iadMatrix.data() : nullptr;
+  // Generalised volumes (fluids, Lagrangian form): i's pressure term in a pair weighs r_j / r_i,
+  // j's r_i / r_j (docs/verification.md); nullptr with the standard volumes.
+  const double* volumeWeight = ws.volumeWeight.empty() ? nullptr : ws.volumeWeight.data();
+  if (volumeWeight && (Solid || RZ || kInterface || Iad || ws.volumeWeight.size() < p.size()))
+    throw std::logic_error("generalised volume elements: fluids, the Lagrangian form, the kernel "
+                           "gradient, 1D/2D/3D, a weight for every particle");
   if constexpr (!Solid) fillPressureTerms<RZ, Form>(p, pressureTerm, here);
   const bool artificial = Solid && artificialStress->enabled();
   // A porous particle's shear modulus is its matrix's over its distention.
@@ -171,6 +184,13 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
       double grad[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};  // -L_i
       double dudtDivergence = 0.0, dudtViscous = 0.0, dudtConduction = 0.0;
       double signal = 0.0;  // the conductivity's fastest pair signal heating i
+      // The conductivity's exchange with one neighbour, and the fastest signal heating i.
+      const auto conduct = [&](const Pair& g) {
+        if (!conduction.enabled()) return;
+        const auto c = conduction.term(o, g);
+        dudtConduction += c.rate;
+        signal = std::max(signal, c.inflowSignal);
+      };
       const double* Ci = Iad ? &iad[9 * i] : nullptr;
       const bool iadI = Iad && Ci[0] != 0.0;
 
@@ -212,11 +232,7 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
           }
           dudtViscous += 0.5 * visc * dvA;
           dudtDivergence += g.mj * dvAi;
-          if (conduction.enabled()) {
-            const auto c = conduction.term(o, g);
-            dudtConduction += c.rate;
-            signal = std::max(signal, c.inflowSignal);
-          }
+          conduct(g);
           continue;
         }
         const double fVisc = g.mj * viscosity.coefficient(o, g) * g.dWavg * g.rInv;
@@ -251,20 +267,21 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
             acc[a] += sum;
           }
         } else {
-          double f;
+          double f, ratio = 1.0, inverse = 1.0;
           if constexpr (kInterface) {
             f = g.mj * (pressureTerm[i] / g.sigmaJ + pressureTerm[j] / o.sigma) * g.dWavg * g.rInv;
           } else {
-            f = g.mj * (pressureTerm[i] * g.dWi + pressureTerm[j] * g.dWj) * g.rInv;
+            if (volumeWeight) {  // r_j / r_i weighs i's term, r_i / r_j j's
+              ratio = volumeWeight[j] / volumeWeight[i];
+              inverse = 1.0 / ratio;
+            }
+            f = g.mj * (ratio * pressureTerm[i] * g.dWi + inverse * pressureTerm[j] * g.dWj) *
+                g.rInv;
           }
           for (int d = 0; d < D; ++d) acc[d] -= f * dx[d];
-          dudtDivergence += wGrad * g.vdotx;
+          dudtDivergence += ratio * wGrad * g.vdotx;
         }
-        if (conduction.enabled()) {
-          const auto c = conduction.term(o, g);
-          dudtConduction += c.rate;
-          signal = std::max(signal, c.inflowSignal);
-        }
+        conduct(g);
       }
       if (conduction.enabled()) ws.conductionSignal[i] = signal;
 

@@ -44,13 +44,18 @@ struct HydroWorkspace {
   // over i's gather list; all zero where tau cannot be inverted (the pair terms then take the
   // kernel gradient). Filled only with SphOptions::gradients = IntegralApproach.
   std::vector<double> iadMatrix;
+  // Generalised volume elements (SphOptions::volumeElements): each particle's X_i / m_i, real
+  // and ghost, fixed from the densities before the density pass; the pair terms take only the
+  // ratios of two particles' values. Empty with the standard (mass) volumes.
+  std::vector<double> volumeWeight;
   // Largest h of each real particle (SphOptions::hMaxFactor), or nullptr: h is not capped. The
   // run points it at the particles' column before each pass that sets h.
   const double* hCap = nullptr;
   // Artificial conductivity: the fastest signal speed v_sig^u of the pairs that heat each
-  // evaluated real particle [m/s] (sim/sph/terms/artificial_conductivity.hpp), for the individual steps' diffusion
-  // limit (sim/run/timestep_criteria.hpp). Written by the force pass only with conductivity on,
-  // and read right after it: a reorder of the particles does not carry it along.
+  // evaluated real particle [m/s] (sim/sph/terms/artificial_conductivity.hpp), for the
+  // individual steps' diffusion limit (sim/run/timestep_criteria.hpp). Written by the force
+  // pass only with conductivity on, and read right after it: a reorder of the particles does not
+  // carry it along.
   std::vector<double> conductionSignal;
   // Number of neighbours in each real particle's gather list, the particle itself included
   // (diagnostics, the neighbour check and the decomposition's costs).

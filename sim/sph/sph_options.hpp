@@ -34,6 +34,13 @@ enum class ViscosityReconstruction { None, VanLeer, Monotone };
 // moment of i's neighbours, exact for linear fields on any particle arrangement.
 enum class GradientScheme { Kernel, IntegralApproach };
 
+// The volume a particle's kernel sums give it (docs/verification.md, "Generalised volume
+// elements"). Mass: V_i = m_i / sum_j m_j W_ij, the standard density sum. Generalised: Hopkins'
+// (2013, MNRAS 428, 2840) V_i = X_i / sum_j X_j W_ij with the weight X = (m / rho)^p of
+// Cabezón, García-Senz & Figueira (2017, A&A 606, A78), rho the density of the step before: a
+// density jump then no longer smears the volumes (sum_j V_j W_ij stays nearer one across it).
+enum class VolumeElements { Mass, Generalised };
+
 struct SphOptions {
   KernelKind kernel = KernelKind::CubicSpline;
   DensityMethod density = DensityMethod::Summation;
@@ -61,6 +68,10 @@ struct SphOptions {
   double hMaxFactor = 0.0;
   MomentumForm form = MomentumForm::Lagrangian;
   GradientScheme gradients = GradientScheme::Kernel;
+  VolumeElements volumeElements = VolumeElements::Mass;
+  // p of X = (m / rho)^p (Generalised only), in [0, 1]: 0.7 measured the better balance than 1
+  // on the blasts (docs/verification.md), not a published value.
+  double volumeExponent = 0.7;
   // Monaghan (2000) / Gray, Monaghan & Swift (2001) artificial stress against the tensile
   // instability, applied to materials with strength: epsilon (0 = off; negative = the default,
   // 0.3 when the scene has a material with strength) and the exponent n of f = W(r)/W(dp).

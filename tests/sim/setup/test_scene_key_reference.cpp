@@ -250,7 +250,7 @@ TEST(SceneKeyReference, UnknownKeysListTheSchemasKeys) {
             "k.toml:18: key 'sph.kernal': unknown key; allowed keys here: kernel, density, "
             "smoothing_length, eta, relaxation, courant, force_factor, h_min_factor, h_max_factor, "
             "viscosity, "
-            "conductivity, form, gradients, artificial_stress");
+            "conductivity, form, gradients, volume_elements, volume_exponent, artificial_stress");
   EXPECT_NE(errorOf(std::string(kMinimal) + "[materials.fracture]\nmodel = \"none\"\nsed = 2\n")
                 .find("allowed keys here: model, weibull_k, weibull_m, tensile_strength, "
                       "erosion_strain, crack_speed_factor, max_crack_increment, seed"),
