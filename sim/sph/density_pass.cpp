@@ -28,8 +28,8 @@ double powD(double x) {
 }
 
 // Sum of m_j W and m_j dW/dh over the candidates within the support of h (m_j r_j with the
-// generalised volumes' weights r, when given).
-template <template <int> class K, int D>
+// generalised volumes' weights r, when Weighted).
+template <template <int> class K, int D, bool Weighted>
 void kernelSums(const ParticleSet& p, const double* weight, const std::vector<std::uint32_t>& cand,
                 const std::vector<double>& dist2, double h, double& S, double& dS) {
   S = 0.0;
@@ -41,7 +41,7 @@ void kernelSums(const ParticleSet& p, const double* weight, const std::vector<st
   for (std::size_t k = 0; k < cand.size(); ++k) {
     if (dist2[k] >= reach2) continue;
     const double r = std::sqrt(dist2[k]);
-    const double m = weight ? p.mass[cand[k]] * weight[cand[k]] : p.mass[cand[k]];
+    const double m = Weighted ? p.mass[cand[k]] * weight[cand[k]] : p.mass[cand[k]];
     double w, dw;
     K<D>::shape(r * hInv, w, dw);
     S += m * w;
@@ -53,7 +53,9 @@ void kernelSums(const ParticleSet& p, const double* weight, const std::vector<st
   dS *= norm * hInv;
 }
 
-template <template <int> class K, int D, bool RZ>
+// Weighted: the generalised volumes (ws.volumeWeight; 1D/2D/3D), a template parameter so that
+// the standard sums pay nothing for them.
+template <template <int> class K, int D, bool RZ, bool Weighted>
 std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
                                            const std::vector<std::size_t>* active) {
   const SphOptions& sph = ws.sph;
@@ -65,8 +67,9 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
   const bool monotone = sph.viscosityReconstruction == ViscosityReconstruction::Monotone;
   // Generalised volumes (1D/2D/3D, summation density): every sum below weighs j by m_j r_j in
   // place of m_j, so it is sum_j X_j W = X_i / V_i scaled by m_i / X_i; rho_i = S / r_i.
-  const double* weight = ws.volumeWeight.empty() ? nullptr : ws.volumeWeight.data();
-  if (weight && ws.volumeWeight.size() < p.size())
+  static_assert(!(RZ && Weighted));
+  const double* weight = Weighted ? ws.volumeWeight.data() : nullptr;
+  if (Weighted && ws.volumeWeight.size() < p.size())
     throw std::logic_error("generalised volumes: a weight for every particle, ghosts included");
   std::size_t failedIndex = nReal;  // lowest failing index (a min reduction: schedule-proof)
   const std::size_t count = active ? active->size() : nReal;
@@ -84,7 +87,7 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
     for (std::size_t at = 0; at < count; ++at) {
       const std::size_t i = active ? (*active)[at] : at;
       const double xi[3] = {p.x[0][i], p.x[1][i], p.x[2][i]};
-      const double mi = weight ? p.mass[i] * weight[i] : p.mass[i];
+      const double mi = Weighted ? p.mass[i] * weight[i] : p.mass[i];
       const double hCap = ws.hCap ? ws.hCap[i] : std::numeric_limits<double>::infinity();
       const double hStart = std::min(p.h[i], hCap);
       double h = hStart;
@@ -109,7 +112,7 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
         // Newton iteration on f(h) = S(h) - m (eta/h)^D.
         for (int it = 0; it < kNewtonMaxIterations; ++it) {
           double S, dS;
-          kernelSums<K, D>(p, weight, cand, dist2, h, S, dS);
+          kernelSums<K, D, Weighted>(p, weight, cand, dist2, h, S, dS);
           const double target = mi * etaD / powD<D>(h);
           const double f = S - target;
           const double fp = dS + D * target / h;
@@ -140,7 +143,7 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
         const double r = std::sqrt(dist2[k]);
         const std::uint32_t j = cand[k];
         list.push_back(j);
-        const double m = weight ? p.mass[j] * weight[j] : p.mass[j];
+        const double m = Weighted ? p.mass[j] * weight[j] : p.mass[j];
         double w, dw;
         K<D>::shape(r * hInv, w, dw);
         S += m * w;
@@ -207,7 +210,7 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
       if (summation) {
         sigma = S;
         p.rho[i] = RZ ? S / (2.0 * std::numbers::pi * rt) : S;
-        if (weight) p.rho[i] /= weight[i];  // m_i sum_j X_j W / X_i
+        if constexpr (Weighted) p.rho[i] /= weight[i];  // m_i sum_j X_j W / X_i
       } else {
         sigma = RZ ? 2.0 * std::numbers::pi * rt * p.rho[i] : p.rho[i];
       }
@@ -277,8 +280,12 @@ std::optional<std::size_t> runDensityPass(ParticleSet& p, HydroWorkspace& ws,
       p.areaDensity[i] = 2.0 * std::numbers::pi * ws.smoothedR[i] * p.rho[i];
     }
   }
+  const bool weighted = !ws.volumeWeight.empty();
+  if (weighted && rz) throw std::logic_error("generalised volumes are built for 1D, 2D and 3D");
   return dispatchHydro(ws, [&]<template <int> class K, int D, bool RZ>() {
-    return densityPassImpl<K, D, RZ>(p, ws, active);
+    if constexpr (!RZ)
+      if (weighted) return densityPassImpl<K, D, false, true>(p, ws, active);
+    return densityPassImpl<K, D, RZ, false>(p, ws, active);
   });
 }
 

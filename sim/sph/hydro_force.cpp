@@ -116,10 +116,14 @@ void splitAtHalos(const ParticleSet& p, const HydroWorkspace& ws, std::size_t fi
 // objects (sim/sph/terms/) that hold their own per-particle data and say whether they are on.
 // Iad: the fluid pair terms with the integral-approach gradient (sim/sph/iad_matrix.hpp) in
 // place of the kernel's (Lagrangian form, fluids, 1D/2D/3D; the scene reader refuses the rest).
-template <template <int> class K, int D, bool RZ, MomentumForm Form, bool Solid, bool Iad = false>
+// Weighted: the generalised volumes' pressure terms (ws.volumeWeight; fluids, Lagrangian form,
+// kernel gradient, 1D/2D/3D), a template parameter so that the other passes pay nothing for them.
+template <template <int> class K, int D, bool RZ, MomentumForm Form, bool Solid, bool Iad = false,
+          bool Weighted = false>
 void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
                    const std::vector<std::size_t>* active) {
   static_assert(!Iad || (!RZ && !Solid && Form == MomentumForm::Lagrangian));
+  static_assert(!Weighted || (!RZ && !Solid && !Iad && Form == MomentumForm::Lagrangian));
   const SphOptions& sph = ws.sph;
   const std::size_t nReal = p.numReal;
   constexpr bool kInterface = Form == MomentumForm::Interface;
@@ -152,10 +156,9 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
   const double* iad = Iad ? ws.iadMatrix.data() : nullptr;
   // Generalised volumes (fluids, Lagrangian form): i's pressure term in a pair weighs r_j / r_i,
   // j's r_i / r_j (docs/verification.md); nullptr with the standard volumes.
-  const double* volumeWeight = ws.volumeWeight.empty() ? nullptr : ws.volumeWeight.data();
-  if (volumeWeight && (Solid || RZ || kInterface || Iad || ws.volumeWeight.size() < p.size()))
-    throw std::logic_error("generalised volume elements: fluids, the Lagrangian form, the kernel "
-                           "gradient, 1D/2D/3D, a weight for every particle");
+  const double* volumeWeight = Weighted ? ws.volumeWeight.data() : nullptr;
+  if (Weighted && ws.volumeWeight.size() < p.size())
+    throw std::logic_error("generalised volumes: a weight for every particle, ghosts included");
   if constexpr (!Solid) fillPressureTerms<RZ, Form>(p, pressureTerm, here);
   const bool artificial = Solid && artificialStress->enabled();
   // A porous particle's shear modulus is its matrix's over its distention.
@@ -271,7 +274,7 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
           if constexpr (kInterface) {
             f = g.mj * (pressureTerm[i] / g.sigmaJ + pressureTerm[j] / o.sigma) * g.dWavg * g.rInv;
           } else {
-            if (volumeWeight) {  // r_j / r_i weighs i's term, r_i / r_j j's
+            if constexpr (Weighted) {  // r_j / r_i weighs i's term, r_i / r_j j's
               ratio = volumeWeight[j] / volumeWeight[i];
               inverse = 1.0 / ratio;
             }
@@ -371,12 +374,22 @@ void runForcePass(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
                   const std::vector<std::size_t>* active) {
   const bool solid = p.stressComponents() > 0;
   const MomentumForm form = ws.sph.form;
+  const bool weighted = !ws.volumeWeight.empty();
   dispatchHydro(ws, [&]<template <int> class K, int D, bool RZ>() {
     if (ws.sph.gradients == GradientScheme::IntegralApproach) {
+      if (weighted) throw std::logic_error("generalised volumes take the kernel gradient");
       if (solid || RZ || form != MomentumForm::Lagrangian || ws.iadMatrix.size() < 9 * p.size())
         throw std::logic_error("integral-approach gradients: fluids, the Lagrangian form, 1D/2D/3D, "
                                "with their matrices computed");
       if constexpr (!RZ) forcePassImpl<K, D, false, MomentumForm::Lagrangian, false, true>(p, ws, halos, active);
+      return;
+    }
+    if (weighted) {
+      if (solid || RZ || form != MomentumForm::Lagrangian)
+        throw std::logic_error("generalised volumes: fluids, the Lagrangian form, the kernel "
+                               "gradient, 1D/2D/3D");
+      if constexpr (!RZ)
+        forcePassImpl<K, D, false, MomentumForm::Lagrangian, false, false, true>(p, ws, halos, active);
       return;
     }
     if (form == MomentumForm::Interface) {

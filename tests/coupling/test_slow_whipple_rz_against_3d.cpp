@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -35,8 +36,10 @@ std::vector<LimitShot> bracketAt3kms(const std::string& file, std::vector<std::s
                                      const std::string& tag) {
   LimitSearchOptions o;
   o.speeds = {3e3};
-  o.smallest = 4.362e-3;  // the ends of the RZ bracket of the 0.4 and 0.8 mm studies
-  o.largest = 5.657e-3;
+  // The ends of the RZ bracket of the 0.4 and 0.8 mm studies, as their bisection of 2-16 mm in
+  // log d reached them: 2 mm x 8^(3/8) and 2 mm x 8^(1/2).
+  o.smallest = 2e-3 * std::pow(8.0, 0.375);
+  o.largest = 2e-3 * std::sqrt(8.0);
   o.iterations = 0;
   o.overrides = std::move(overrides);
   o.outDir = fs::temp_directory_path() / ("ejecta_slow_rz3d_" + tag + std::to_string(::getpid()));
