@@ -13,6 +13,7 @@
 //                      [--alpha A] [--beta B] [--switch none|morris_monaghan]
 //                      [--reconstruction none|monotone|van_leer] [--gradients kernel|iad]
 //                      [--volume-exponent P]   (generalised volume elements X = (m/rho)^P)
+//                      [--dissipation viscosity|riemann]   (riemann: Godunov SPH)
 //   ejecta_bench_sedov --chart DIR [--threads T]
 //
 // --chart: the accuracy-for-cost chart of issue 19: the kernel gradient (the default), with
@@ -49,7 +50,7 @@ struct Config {
   double eta = 1.2, tEnd = 0.05, conductivity = 0.0, alpha = 1.0, beta = 2.0;
   bool balsara = false;
   std::string kernel = "cubic_spline", stepping = "global", viscositySwitch = "none",
-              reconstruction = "none", gradients = "kernel";
+              reconstruction = "none", gradients = "kernel", dissipation = "viscosity";
   int limiterFactor = 2;
   double volumeExponent = std::nan("");  // unset: the standard (mass) volumes
 };
@@ -95,6 +96,10 @@ std::string configure(const Config& c, Scene& scene) {
     scene.sph.volumeElements = VolumeElements::Generalised;
     scene.sph.volumeExponent = c.volumeExponent;
   }
+  if (c.dissipation != "viscosity" && c.dissipation != "riemann")
+    return "--dissipation must be viscosity or riemann, not " + c.dissipation;
+  scene.sph.dissipation =
+      c.dissipation == "riemann" ? Dissipation::Riemann : Dissipation::Viscosity;
   scene.time.tEnd = c.tEnd;
   if (c.stepping != "global" && c.stepping != "individual")
     return "--stepping must be global or individual, not " + c.stepping;
@@ -249,6 +254,7 @@ int main(int argc, char** argv) {
     else if (arg == "--reconstruction") c.reconstruction = next();
     else if (arg == "--gradients") c.gradients = next();
     else if (arg == "--volume-exponent") c.volumeExponent = std::atof(next());
+    else if (arg == "--dissipation") c.dissipation = next();
     else if (arg == "--chart") chartDir = next();
     else { std::fprintf(stderr, "unknown option %s\n", arg.c_str()); return 2; }
   }

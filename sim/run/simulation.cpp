@@ -475,7 +475,7 @@ void Simulation::refuseUnbuiltSphOptions() const {
   const SphOptions& sph = scene_.sph;
   const std::string where =
       scene_.sourcePath.empty() ? "scene '" + scene_.name + "'" : scene_.sourcePath;
-  // What neither option is built for. (The materials, not the particles' stress columns: those
+  // What none of the options is built for. (The materials, not the particles' stress columns: those
   // are added by the strength package after this check.)
   const bool solid = materials_.anyStrength() || materials_.anyFracture();
   auto unbuilt = [&](const std::string& oneRank) -> std::string {
@@ -493,6 +493,14 @@ void Simulation::refuseUnbuiltSphOptions() const {
     if (!why.empty())
       throw SimulationError(where + ": key 'sph.volume_elements': \"generalised\" " + why +
                             "; use volume_elements = \"mass\"");
+  }
+  if (sph.dissipation == Dissipation::Riemann) {
+    std::string why = unbuilt("runs on one rank (not yet compared across ranks)");
+    if (why.empty() && sph.gradients != GradientScheme::Kernel) why = "takes the kernel gradient";
+    if (why.empty() && sph.volumeElements != VolumeElements::Mass) why = "takes mass volumes";
+    if (!why.empty())
+      throw SimulationError(where + ": key 'sph.dissipation': \"riemann\" " + why +
+                            "; use dissipation = \"viscosity\"");
   }
   if (sph.gradients != GradientScheme::IntegralApproach) return;
   const std::string why =

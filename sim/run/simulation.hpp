@@ -153,9 +153,9 @@ class Simulation {
     return i < ws_.lists.pairedParticles() && ws_.lists.pairs(i).size() <= 1;  // itself alone
   }
   // h from the continuity density (SmoothingLengthMethod::Neighbours), held at the caps.
-  // Throws where sph.gradients = "iad" (sim/sph/iad_matrix.hpp) or sph.volume_elements =
-  // "generalised" is not built: more than one rank, RZ, solids, the interface form, continuity
-  // density, individual steps; and the two together.
+  // Throws where sph.gradients = "iad" (sim/sph/iad_matrix.hpp), sph.volume_elements =
+  // "generalised" or sph.dissipation = "riemann" is not built: more than one rank, RZ, solids, the
+  // interface form, continuity density, individual steps; and combinations of them.
   void refuseUnbuiltSphOptions() const;
   void smoothingLengthFromDensity();
   // sph.h_max_factor's package (null when h is not capped).

@@ -30,6 +30,7 @@ Scene validate(const toml::table& doc, const std::string& sourceName) {
   readMaterials(root, scene);
   checkGradientScheme(root, scene);
   checkVolumeElements(root, scene);
+  checkDissipation(root, scene);
   readBodies(root, scene);
   placeRestingBodies(scene);  // before anything reads where the bodies are
   readDeposits(root, scene);

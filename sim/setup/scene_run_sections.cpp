@@ -180,6 +180,25 @@ void readSph(const TableReader& root, SphOptions& sph) {
             "\"generalised\" takes the kernel gradient: with gradients = \"iad\" it ran away "
             "(a particle at 1e12 m/s in a periodic 2D blast, docs/verification.md)");
   }
+  sph.dissipation = r.optEnum<Dissipation>("dissipation", {{"viscosity", Dissipation::Viscosity},
+                                                           {"riemann", Dissipation::Riemann}})
+                        .value_or(sph.dissipation);
+  if (sph.dissipation == Dissipation::Riemann) {
+    const std::string why = "\"riemann\" (Godunov SPH) is built ";
+    r.check(sph.form == MomentumForm::Lagrangian, "dissipation",
+            why + "for the Lagrangian form (form = \"interface\" is not)");
+    r.check(sph.density == DensityMethod::Summation, "dissipation",
+            why + "with summation density (continuity density's rate is not)");
+    r.check(sph.gradients == GradientScheme::Kernel, "dissipation",
+            why + "with the kernel gradient (gradients = \"iad\" is not)");
+    r.check(sph.volumeElements == VolumeElements::Mass, "dissipation",
+            why + "with mass volumes (volume_elements = \"generalised\" is not)");
+    // The pair's velocities are reconstructed to its midpoint as the viscosity's would be
+    // (second order where the flow is smooth); "none" in [sph.viscosity] keeps the first order.
+    const toml::table* vt = r.optTable("viscosity");
+    if (!vt || !vt->contains("reconstruction"))
+      sph.viscosityReconstruction = ViscosityReconstruction::Monotone;
+  }
   if (const toml::table* at = r.optTable("artificial_stress")) {
     const TableReader a(root.context(), *at, "sph.artificial_stress", "sph.artificial_stress");
     sph.artificialStress = a.optQuantity("epsilon", one).value_or(sph.artificialStress);
@@ -239,32 +258,57 @@ void readOutput(const TableReader& root, OutputOptions& out, double tEnd) {
 }
 
 
+namespace {
+
+// Why a fluid-only [sph] option refuses each case (nullptr: the option is built for it).
+struct FluidOnlyReasons {
+  const char* rz;      // RZ
+  const char* steps;   // individual time steps
+  const char* solids;  // a material with strength or fracture
+};
+
+// The refusals the fluid-only options of [sph] share, for the option `key` set to `value`.
+void checkFluidOnlyOption(const TableReader& root, const Scene& scene, const std::string& key,
+                          const std::string& value, const FluidOnlyReasons& why) {
+  const TableReader sph(root.context(), *root.optTable("sph"), "sph", "sph");
+  const std::string quoted = "\"" + value + "\"";
+  if (why.rz)
+    sph.check(scene.geometry != Geometry::Axisymmetric, key,
+              quoted + " is built for 1D, 2D and 3D, not RZ (" + why.rz + ")");
+  if (why.steps)
+    sph.check(scene.time.stepping == Stepping::Global, key,
+              quoted + " runs with global time steps (time.stepping = \"global\"): " + why.steps);
+  for (const MaterialSpec& m : scene.materials)
+    sph.check(!m.strength.present && !m.fracture.present, key,
+              quoted + " is built for fluids; material '" + m.name +
+                  "' has strength or fracture (" + why.solids + ")");
+}
+
+}  // namespace
+
 void checkVolumeElements(const TableReader& root, const Scene& scene) {
   if (scene.sph.volumeElements != VolumeElements::Generalised) return;
-  const TableReader sph(root.context(), *root.optTable("sph"), "sph", "sph");
-  sph.check(scene.geometry != Geometry::Axisymmetric, "volume_elements",
-            "\"generalised\" is built for 1D, 2D and 3D, not RZ (the ring masses' form is not)");
-  sph.check(scene.time.stepping == Stepping::Global, "volume_elements",
-            "\"generalised\" runs with global time steps (time.stepping = \"global\"): the "
-            "weights of particles between their steps are not kept");
-  for (const MaterialSpec& m : scene.materials)
-    sph.check(!m.strength.present && !m.fracture.present, "volume_elements",
-              "\"generalised\" is built for fluids; material '" + m.name +
-                  "' has strength or fracture (the stress divergence keeps the mass volumes)");
+  checkFluidOnlyOption(root, scene, "volume_elements", "generalised",
+                       {"the ring masses' form is not",
+                        "the weights of particles between their steps are not kept",
+                        "the stress divergence keeps the mass volumes"});
 }
 
 void checkGradientScheme(const TableReader& root, const Scene& scene) {
   if (scene.sph.gradients != GradientScheme::IntegralApproach) return;
-  const TableReader sph(root.context(), *root.optTable("sph"), "sph", "sph");
-  sph.check(scene.geometry != Geometry::Axisymmetric, "gradients",
-            "\"iad\" is built for 1D, 2D and 3D, not RZ (its ring-weighted matrices are not)");
-  sph.check(scene.time.stepping == Stepping::Global, "gradients",
-            "\"iad\" runs with global time steps (time.stepping = \"global\"): the matrices of "
-            "particles between their steps are not kept");
-  for (const MaterialSpec& m : scene.materials)
-    sph.check(!m.strength.present && !m.fracture.present, "gradients",
-              "\"iad\" is built for fluids; material '" + m.name +
-                  "' has strength or fracture (the stress divergence keeps the kernel gradient)");
+  checkFluidOnlyOption(root, scene, "gradients", "iad",
+                       {"its ring-weighted matrices are not",
+                        "the matrices of particles between their steps are not kept",
+                        "the stress divergence keeps the kernel gradient"});
+}
+
+void checkDissipation(const TableReader& root, const Scene& scene) {
+  if (scene.sph.dissipation != Dissipation::Riemann) return;
+  checkFluidOnlyOption(root, scene, "dissipation", "riemann",
+                       {"the ring form of its pair volumes is not",
+                        "not yet compared against global steps",
+                        "the stress divergence keeps the artificial viscosity; a solid's Riemann "
+                        "problem is not built"});
 }
 
 }  // namespace ejecta::scene_detail

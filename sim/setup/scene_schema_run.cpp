@@ -102,6 +102,15 @@ std::vector<SceneTable> runTables() {
         number("volume_exponent", "0.7",
                "p of X = (m/ρ)^p for `volume_elements = \"generalised\"`, in [0, 1] (0: X = 1; "
                "1: the step before's volumes; 0.7 measured the better balance on the blasts)"),
+        choice("dissipation", {"viscosity", "riemann"}, "\"viscosity\"",
+               "what dissipates at a shock: `\"viscosity\"`, Monaghan's artificial viscosity "
+               "(`[sph.viscosity]`); `\"riemann\"`: Godunov SPH (Inutsuka 2002), each pair's "
+               "pressure the star pressure of its Riemann problem (shocks by the γ = 1.4 gas's "
+               "jump conditions, rarefactions acoustic), approaching pairs' velocities "
+               "reconstructed as `sph.viscosity.reconstruction` says (default `\"monotone\"` "
+               "with it); fluids, Lagrangian form, summation density, kernel gradient, mass "
+               "volumes, 1D/2D/3D, global steps, one rank (`docs/verification.md`, "
+               "\"Riemann-solver dissipation\")"),
         table("artificial_stress", "defaults below",
               "`[sph.artificial_stress]`: Monaghan (2000) against the tensile instability; "
               "solids only")}},

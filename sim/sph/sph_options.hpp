@@ -41,6 +41,13 @@ enum class GradientScheme { Kernel, IntegralApproach };
 // density jump then no longer smears the volumes (sum_j V_j W_ij stays nearer one across it).
 enum class VolumeElements { Mass, Generalised };
 
+// What dissipates at a shock (docs/verification.md, "Riemann-solver dissipation"). Viscosity:
+// Monaghan's artificial viscosity added to the pressure force (seed eqs. 1.6-1.7). Riemann: no
+// viscosity; each pair's pressure is the star pressure P* of the one-dimensional Riemann problem
+// between the two particles along their axis (Godunov SPH, Inutsuka 2002, J. Comput. Phys. 179,
+// 238; sim/sph/terms/riemann_dissipation.hpp), and the energy equation uses its star velocity.
+enum class Dissipation { Viscosity, Riemann };
+
 struct SphOptions {
   KernelKind kernel = KernelKind::CubicSpline;
   DensityMethod density = DensityMethod::Summation;
@@ -72,6 +79,7 @@ struct SphOptions {
   // p of X = (m / rho)^p (Generalised only), in [0, 1]: 0.7 measured the better balance than 1
   // on the blasts (docs/verification.md), not a published value.
   double volumeExponent = 0.7;
+  Dissipation dissipation = Dissipation::Viscosity;
   // Monaghan (2000) / Gray, Monaghan & Swift (2001) artificial stress against the tensile
   // instability, applied to materials with strength: epsilon (0 = off; negative = the default,
   // 0.3 when the scene has a material with strength) and the exponent n of f = W(r)/W(dp).

@@ -249,8 +249,8 @@ TEST(SceneKeyReference, UnknownKeysListTheSchemasKeys) {
   EXPECT_EQ(errorOf(std::string(kMinimal) + "[sph]\nkernal = \"wendland_c2\"\n"),
             "k.toml:18: key 'sph.kernal': unknown key; allowed keys here: kernel, density, "
             "smoothing_length, eta, relaxation, courant, force_factor, h_min_factor, h_max_factor, "
-            "viscosity, "
-            "conductivity, form, gradients, volume_elements, volume_exponent, artificial_stress");
+            "viscosity, conductivity, form, gradients, volume_elements, volume_exponent, "
+            "dissipation, artificial_stress");
   EXPECT_NE(errorOf(std::string(kMinimal) + "[materials.fracture]\nmodel = \"none\"\nsed = 2\n")
                 .find("allowed keys here: model, weibull_k, weibull_m, tensile_strength, "
                       "erosion_strain, crack_speed_factor, max_crack_increment, seed"),

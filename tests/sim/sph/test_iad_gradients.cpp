@@ -18,7 +18,7 @@
 #include "sim/solid/materials.hpp"
 #include "sim/sph/iad_matrix.hpp"
 #include "sim/sph/kernel.hpp"
-#include "support/periodic_blast.hpp"
+#include "support/fluid_option_checks.hpp"
 #include "support/quarter_blast.hpp"
 
 namespace ejecta {
@@ -149,51 +149,14 @@ TEST(IadGradients, ExactForALinearFieldOnAnyArrangement) {
 
 // --- Through the solver: conservation, threads, mirror walls -----------------------------------
 
-Simulation makeSimulation(const Scene& scene, int threads) {
-  MaterialTable materials = MaterialTable::fromScene(scene);
-  ParticleSet p = buildParticles(scene, materials);
-  return Simulation(scene, std::move(p), std::move(materials), threads);
-}
 
-// tests/sim/run/test_simulation.cpp's periodic 2D blast, off the lattice's centre of symmetry (a
-// centred blast has no net momentum whether or not the pair force conserves it).
-Scene iadBlast(const std::vector<std::string>& more = {}) {
-  std::vector<std::string> overrides = {"sph.gradients=iad",
-                                        "energy_deposits[0].center=[0.1375, 0.0625]"};
-  overrides.insert(overrides.end(), more.begin(), more.end());
-  return parseScene(test::periodicBlastScene(), "iad_blast.toml", overrides);
-}
-
+// The periodic 2D blast off the lattice's centre of symmetry (a centred blast has no net momentum
+// whether or not the pair force conserves it): tests/support/fluid_option_checks.hpp.
 TEST(IadGradients, StrongBlastConservesEnergyAndMomentum) {
-  Simulation sim = makeSimulation(iadBlast(), 2);
-  const RunOutcome r = runSimulation(sim, RunOptions{});
-  ASSERT_TRUE(r.ok) << r.error;
-  std::printf("  periodic blast: energy error %.2e, %ld steps\n", r.summary.energy.relativeError,
-              r.summary.steps);
-  // As for the kernel gradient (test_simulation.cpp: leapfrog truncation ~1e-4, bound 1e-3).
-  EXPECT_LT(std::abs(r.summary.energy.relativeError), 1e-3);
-  // Antisymmetric pair terms and periodic images: momentum to round-off of sum |m v|.
-  double scale = 0.0;
-  const ParticleSet& p = sim.particles();
-  for (std::size_t i = 0; i < p.numReal; ++i) scale += p.mass[i] * std::hypot(p.v[0][i], p.v[1][i]);
-  for (int d = 0; d < 2; ++d)
-    EXPECT_LT(std::abs(r.summary.momentum.final[d] - r.summary.momentum.initial[d]), 1e-12 * scale);
+  test::expectBlastConserves({"sph.gradients=iad"});
 }
 
-TEST(IadGradients, IsIndependentOfThreadCount) {
-  auto run = [](int threads) {
-    Simulation sim = makeSimulation(iadBlast({"time.t_end=0.006"}), threads);
-    EXPECT_TRUE(runSimulation(sim, RunOptions{}).ok);
-    return sim.particles();
-  };
-  const ParticleSet a = run(2), b = run(1);
-  ASSERT_EQ(a.numReal, b.numReal);
-  for (std::size_t i = 0; i < a.numReal; ++i) {
-    ASSERT_EQ(a.x[0][i], b.x[0][i]) << i;
-    ASSERT_EQ(a.v[1][i], b.v[1][i]) << i;
-    ASSERT_EQ(a.u[i], b.u[i]) << i;
-  }
-}
+TEST(IadGradients, IsIndependentOfThreadCount) { test::expectThreadIndependent({"sph.gradients=iad"}); }
 
 // A blast in a walled box and its quarter with walls on the symmetry axes: the mirror ghosts must
 // carry C with the signs a reflection gives (C_xy reverses), or the particles beside the axes feel
@@ -211,83 +174,24 @@ TEST(IadGradients, QuarterDomainWithMirrorWallsMatchesTheFullBox) {
 
 // --- Where it is refused, with the key named ------------------------------------------------
 
-std::string gasScene(const std::string& dimension, const std::string& sph, const std::string& more = "") {
-  return R"(
-[scene]
-name = "iad"
-dimension = ")" + dimension + R"("
-[sph]
-gradients = "iad"
-)" + sph + R"(
-[time]
-t_end = "1 s"
-)" + more + R"(
-[[materials]]
-name = "gas"
-eos = "ideal_gas"
-gamma = 1.4
-[[bodies]]
-name = "box"
-material = "gas"
-shape = "box"
-min = [0.0, 0.0]
-max = [1.0, 1.0]
-spacing = 0.1
-density = 1.0
-pressure = 1.0
-)";
-}
-
-void expectRefused(const std::string& toml, const std::string& words) {
-  try {
-    parseScene(toml, "iad.toml");
-    ADD_FAILURE() << "accepted; expected a refusal naming sph.gradients";
-  } catch (const SceneError& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find("iad.toml"), std::string::npos) << message;
-    EXPECT_NE(message.find("sph.gradients"), std::string::npos) << message;
-    EXPECT_NE(message.find(words), std::string::npos) << message;
-  }
-}
+constexpr const char* kOn = "gradients = \"iad\"";
 
 TEST(IadGradients, RefusedWhereItIsNotBuilt) {
-  EXPECT_NO_THROW(parseScene(gasScene("2d", ""), "iad.toml"));
-  expectRefused(gasScene("rz", ""), "RZ");
-  expectRefused(gasScene("2d", "density = \"continuity\"\n"), "summation density");
-  expectRefused(gasScene("2d", "form = \"interface\"\n"), "Lagrangian form");
-  expectRefused(gasScene("2d", "", "stepping = \"individual\"\n"), "global time steps");
-  const std::string granite = R"(
-[scene]
-name = "iad"
-dimension = "2d"
-[sph]
-gradients = "iad"
-[time]
-t_end = "1 s"
-[[materials]]
-name = "granite"
-eos = "tillotson"
-library = "granite"
-[materials.strength]
-model = "von_mises"
-yield_stress = "1 GPa"
-shear_modulus = "30 GPa"
-)";
-  expectRefused(granite, "granite");
+  using test::expectReaderRefuses, test::optionGasScene;
+  EXPECT_NO_THROW(parseScene(optionGasScene(kOn, "2d"), "iad.toml"));
+  const std::string key = "sph.gradients";
+  expectReaderRefuses(optionGasScene(kOn, "rz"), key, "RZ");
+  expectReaderRefuses(optionGasScene(kOn, "2d", "density = \"continuity\"\n"), key,
+                      "summation density");
+  expectReaderRefuses(optionGasScene(kOn, "2d", "form = \"interface\"\n"), key, "Lagrangian form");
+  expectReaderRefuses(optionGasScene(kOn, "2d", "", "stepping = \"individual\"\n"), key,
+                      "global time steps");
+  expectReaderRefuses(test::optionSolidScene(kOn), key, "granite");
 }
 
 // A scene built in code (a bench) passes no reader: the simulation refuses it itself.
 TEST(IadGradients, TheSimulationRefusesWhatTheReaderWouldHave) {
-  Scene scene = parseScene(gasScene("2d", ""), "iad.toml");
-  scene.time.stepping = Stepping::Individual;
-  try {
-    makeSimulation(scene, 1);
-    ADD_FAILURE() << "accepted individual steps";
-  } catch (const SimulationError& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find("sph.gradients"), std::string::npos) << message;
-    EXPECT_NE(message.find("global time steps"), std::string::npos) << message;
-  }
+  test::expectSimulationRefusesIndividualSteps(kOn, "sph.gradients");
 }
 
 }  // namespace

@@ -15,17 +15,12 @@
 #include "sim/setup/bodies.hpp"
 #include "sim/setup/scene.hpp"
 #include "sim/solid/materials.hpp"
-#include "support/periodic_blast.hpp"
+#include "support/fluid_option_checks.hpp"
 #include "support/quarter_blast.hpp"
 
 namespace ejecta {
 namespace {
 
-Simulation makeSimulation(const Scene& scene, int threads) {
-  MaterialTable materials = MaterialTable::fromScene(scene);
-  ParticleSet p = buildParticles(scene, materials);
-  return Simulation(scene, std::move(p), std::move(materials), threads);
-}
 
 // A contact discontinuity at rest in 1D: gas at density 4 beside gas at density 1, both at
 // pressure 1, on one lattice (so the particle masses jump by 4 at x = 0), walls at the ends.
@@ -71,7 +66,7 @@ struct ContactState {
 };
 
 ContactState runContact(const std::string& sph) {
-  Simulation sim = makeSimulation(parseScene(contactScene(sph), "contact.toml"), 1);
+  Simulation sim = test::simulationOf(parseScene(contactScene(sph), "contact.toml"), 1);
   const RunOutcome r = runSimulation(sim, RunOptions{});
   EXPECT_TRUE(r.ok) << r.error;
   const ParticleSet& p = sim.particles();
@@ -114,45 +109,13 @@ TEST(VolumeElements, AContactAtRestKeepsItsPressureWhereMassVolumesDoNot) {
   }
 }
 
-// tests/sim/run/test_simulation.cpp's periodic 2D blast, off the lattice's centre of symmetry.
-Scene generalisedBlast(const std::vector<std::string>& more = {}) {
-  std::vector<std::string> overrides = {"sph.volume_elements=generalised",
-                                        "energy_deposits[0].center=[0.1375, 0.0625]"};
-  overrides.insert(overrides.end(), more.begin(), more.end());
-  return parseScene(test::periodicBlastScene(), "gve_blast.toml", overrides);
-}
-
+// The periodic 2D blast off the lattice's centre of symmetry (a centred blast has no net momentum
+// whether or not the pair force conserves it): tests/support/fluid_option_checks.hpp.
 TEST(VolumeElements, StrongBlastConservesEnergyAndMomentum) {
-  Simulation sim = makeSimulation(generalisedBlast(), 2);
-  const RunOutcome r = runSimulation(sim, RunOptions{});
-  ASSERT_TRUE(r.ok) << r.error;
-  std::printf("  periodic blast: energy error %.2e, %ld steps\n", r.summary.energy.relativeError,
-              r.summary.steps);
-  // The weights change between steps (the Lagrangian holds them fixed through one), so energy
-  // is kept to the time integration's error, as with mass volumes (test_simulation.cpp, 1e-3).
-  EXPECT_LT(std::abs(r.summary.energy.relativeError), 1e-3);
-  // Each pair's terms are antisymmetric: momentum to round-off of sum |m v|.
-  double scale = 0.0;
-  const ParticleSet& p = sim.particles();
-  for (std::size_t i = 0; i < p.numReal; ++i) scale += p.mass[i] * std::hypot(p.v[0][i], p.v[1][i]);
-  for (int d = 0; d < 2; ++d)
-    EXPECT_LT(std::abs(r.summary.momentum.final[d] - r.summary.momentum.initial[d]), 1e-12 * scale);
+  test::expectBlastConserves({"sph.volume_elements=generalised"});
 }
 
-TEST(VolumeElements, IsIndependentOfThreadCount) {
-  auto run = [](int threads) {
-    Simulation sim = makeSimulation(generalisedBlast({"time.t_end=0.006"}), threads);
-    EXPECT_TRUE(runSimulation(sim, RunOptions{}).ok);
-    return sim.particles();
-  };
-  const ParticleSet a = run(2), b = run(1);
-  ASSERT_EQ(a.numReal, b.numReal);
-  for (std::size_t i = 0; i < a.numReal; ++i) {
-    ASSERT_EQ(a.x[0][i], b.x[0][i]) << i;
-    ASSERT_EQ(a.v[1][i], b.v[1][i]) << i;
-    ASSERT_EQ(a.u[i], b.u[i]) << i;
-  }
-}
+TEST(VolumeElements, IsIndependentOfThreadCount) { test::expectThreadIndependent({"sph.volume_elements=generalised"}); }
 
 // Mirror ghosts must carry their sources' weights, or the particles beside the walls of the
 // quarter box see other volumes than in the full box.
@@ -167,90 +130,30 @@ TEST(VolumeElements, QuarterDomainWithMirrorWallsMatchesTheFullBox) {
   EXPECT_LT(m.pressure, 1e-10);
 }
 
-// --- Where it is refused, with the key named ------------------------------------------------
+// --- Where it is refused, with the key named (tests/support/fluid_option_checks.hpp) --------
 
-std::string gasScene(const std::string& dimension, const std::string& sph,
-                     const std::string& more = "") {
-  return R"(
-[scene]
-name = "gve"
-dimension = ")" + dimension + R"("
-[sph]
-volume_elements = "generalised"
-)" + sph + R"(
-[time]
-t_end = "1 s"
-)" + more + R"(
-[[materials]]
-name = "gas"
-eos = "ideal_gas"
-gamma = 1.4
-[[bodies]]
-name = "box"
-material = "gas"
-shape = "box"
-min = [0.0, 0.0]
-max = [1.0, 1.0]
-spacing = 0.1
-density = 1.0
-pressure = 1.0
-)";
-}
-
-void expectRefused(const std::string& toml, const std::string& key, const std::string& words) {
-  try {
-    parseScene(toml, "gve.toml");
-    ADD_FAILURE() << "accepted; expected a refusal naming " << key;
-  } catch (const SceneError& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find("gve.toml"), std::string::npos) << message;
-    EXPECT_NE(message.find(key), std::string::npos) << message;
-    EXPECT_NE(message.find(words), std::string::npos) << message;
-  }
-}
+constexpr const char* kOn = "volume_elements = \"generalised\"";
 
 TEST(VolumeElements, RefusedWhereItIsNotBuilt) {
-  EXPECT_NO_THROW(parseScene(gasScene("2d", ""), "gve.toml"));
+  using test::expectReaderRefuses, test::optionGasScene;
+  EXPECT_NO_THROW(parseScene(optionGasScene(kOn, "2d"), "gve.toml"));
   const std::string key = "sph.volume_elements";
-  expectRefused(gasScene("2d", "gradients = \"iad\"\n"), key, "kernel gradient");
-  expectRefused(gasScene("rz", ""), key, "RZ");
-  expectRefused(gasScene("2d", "density = \"continuity\"\n"), key, "summation density");
-  expectRefused(gasScene("2d", "form = \"interface\"\n"), key, "Lagrangian form");
-  expectRefused(gasScene("2d", "", "stepping = \"individual\"\n"), key, "global time steps");
-  expectRefused(gasScene("2d", "volume_exponent = 1.5\n"), "sph.volume_exponent", "[0, 1]");
-  expectRefused(gasScene("2d", "volume_exponent = -0.1\n"), "sph.volume_exponent", "[0, 1]");
-  const std::string granite = R"(
-[scene]
-name = "gve"
-dimension = "2d"
-[sph]
-volume_elements = "generalised"
-[time]
-t_end = "1 s"
-[[materials]]
-name = "granite"
-eos = "tillotson"
-library = "granite"
-[materials.strength]
-model = "von_mises"
-yield_stress = "1 GPa"
-shear_modulus = "30 GPa"
-)";
-  expectRefused(granite, key, "granite");
+  expectReaderRefuses(optionGasScene(kOn, "2d", "gradients = \"iad\"\n"), key, "kernel gradient");
+  expectReaderRefuses(optionGasScene(kOn, "rz"), key, "RZ");
+  expectReaderRefuses(optionGasScene(kOn, "2d", "density = \"continuity\"\n"), key,
+                      "summation density");
+  expectReaderRefuses(optionGasScene(kOn, "2d", "form = \"interface\"\n"), key, "Lagrangian form");
+  expectReaderRefuses(optionGasScene(kOn, "2d", "", "stepping = \"individual\"\n"), key,
+                      "global time steps");
+  expectReaderRefuses(optionGasScene(kOn, "2d", "volume_exponent = 1.5\n"), "sph.volume_exponent",
+                      "[0, 1]");
+  expectReaderRefuses(optionGasScene(kOn, "2d", "volume_exponent = -0.1\n"), "sph.volume_exponent",
+                      "[0, 1]");
+  expectReaderRefuses(test::optionSolidScene(kOn), key, "granite");
 }
 
-// A scene built in code (a bench) passes no reader: the simulation refuses it itself.
 TEST(VolumeElements, TheSimulationRefusesWhatTheReaderWouldHave) {
-  Scene scene = parseScene(gasScene("2d", ""), "gve.toml");
-  scene.time.stepping = Stepping::Individual;
-  try {
-    makeSimulation(scene, 1);
-    ADD_FAILURE() << "accepted individual steps";
-  } catch (const SimulationError& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find("sph.volume_elements"), std::string::npos) << message;
-    EXPECT_NE(message.find("global time steps"), std::string::npos) << message;
-  }
+  test::expectSimulationRefusesIndividualSteps(kOn, "sph.volume_elements");
 }
 
 }  // namespace
