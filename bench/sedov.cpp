@@ -11,7 +11,8 @@
 //                      [--eta 1.2] [--t-end 0.05] [--conductivity A] [--balsara 0|1] [--json]
 //                      [--stepping global|individual] [--limiter-factor F]
 //                      [--alpha A] [--beta B] [--switch none|morris_monaghan]
-//                      [--reconstruction none|monotone|van_leer] [--gradients kernel|iad]
+//                      [--reconstruction none|monotone|van_leer]   (default none; monotone
+//                      with --dissipation riemann, as in a scene)  [--gradients kernel|iad]
 //                      [--volume-exponent P]   (generalised volume elements X = (m/rho)^P)
 //                      [--dissipation viscosity|riemann]   (riemann: Godunov SPH)
 //   ejecta_bench_sedov --chart DIR [--threads T]
@@ -50,7 +51,7 @@ struct Config {
   double eta = 1.2, tEnd = 0.05, conductivity = 0.0, alpha = 1.0, beta = 2.0;
   bool balsara = false;
   std::string kernel = "cubic_spline", stepping = "global", viscositySwitch = "none",
-              reconstruction = "none", gradients = "kernel", dissipation = "viscosity";
+              reconstruction = "", gradients = "kernel", dissipation = "viscosity";
   int limiterFactor = 2;
   double volumeExponent = std::nan("");  // unset: the standard (mass) volumes
 };
@@ -83,10 +84,14 @@ std::string configure(const Config& c, Scene& scene) {
     return "--switch must be none or morris_monaghan, not " + c.viscositySwitch;
   scene.sph.viscositySwitch =
       c.viscositySwitch == "morris_monaghan" ? ViscositySwitch::MorrisMonaghan : ViscositySwitch::None;
-  if (c.reconstruction == "monotone") scene.sph.viscosityReconstruction = ViscosityReconstruction::Monotone;
-  else if (c.reconstruction == "van_leer") scene.sph.viscosityReconstruction = ViscosityReconstruction::VanLeer;
-  else if (c.reconstruction != "none")
-    return "--reconstruction must be none, monotone or van_leer, not " + c.reconstruction;
+  // Unset: none, or monotone with the Riemann dissipation (as the scene reader's default).
+  const std::string reconstruction =
+      !c.reconstruction.empty() ? c.reconstruction
+                                : (c.dissipation == "riemann" ? "monotone" : "none");
+  if (reconstruction == "monotone") scene.sph.viscosityReconstruction = ViscosityReconstruction::Monotone;
+  else if (reconstruction == "van_leer") scene.sph.viscosityReconstruction = ViscosityReconstruction::VanLeer;
+  else if (reconstruction != "none")
+    return "--reconstruction must be none, monotone or van_leer, not " + reconstruction;
   if (c.gradients != "kernel" && c.gradients != "iad")
     return "--gradients must be kernel or iad, not " + c.gradients;
   scene.sph.gradients = c.gradients == "iad" ? GradientScheme::IntegralApproach : GradientScheme::Kernel;

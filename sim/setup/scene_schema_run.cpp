@@ -108,7 +108,9 @@ std::vector<SceneTable> runTables() {
                "pressure the star pressure of its Riemann problem (shocks by the γ = 1.4 gas's "
                "jump conditions, rarefactions acoustic), approaching pairs' velocities "
                "reconstructed as `sph.viscosity.reconstruction` says (default `\"monotone\"` "
-               "with it); fluids, Lagrangian form, summation density, kernel gradient, mass "
+               "with it); `[sph.viscosity]` alpha and beta then set only the time step's signal "
+               "speed and its switch and Balsara's factor do nothing, while `[sph.conductivity]` "
+               "adds to it; fluids, Lagrangian form, summation density, kernel gradient, mass "
                "volumes, 1D/2D/3D, global steps, one rank (`docs/verification.md`, "
                "\"Riemann-solver dissipation\")"),
         table("artificial_stress", "defaults below",
@@ -134,7 +136,9 @@ std::vector<SceneTable> runTables() {
                "(a linear flow feels no viscosity, a weak shock stays a few h wide; the UNDEX "
                "scenes use it); `\"van_leer\"`: without the range limit (rings behind weak "
                "shocks, not recommended). The quadratic term takes the raw velocities; "
-               "`docs/undex.md`, \"The reconstructed viscosity\"")}},
+               "`docs/undex.md`, \"The reconstructed viscosity\". With `sph.dissipation = "
+               "\"riemann\"` it reconstructs the Riemann problems' approaching velocities the "
+               "same way and defaults to `\"monotone\"`")}},
       {"sph.conductivity",
        "`[sph.conductivity]`",
        "",

@@ -27,7 +27,7 @@ void readTime(const TableReader& root, TimeOptions& time);
 void checkGradientScheme(const TableReader& root, const Scene& scene);
 // sph.volume_elements = "generalised" against the geometry, the stepping and the materials.
 void checkVolumeElements(const TableReader& root, const Scene& scene);
-// sph.dissipation = "riemann" against the materials.
+// sph.dissipation = "riemann" against the geometry, the stepping and the materials.
 void checkDissipation(const TableReader& root, const Scene& scene);
 // tEnd: the run's length (read first), against which the snapshot cadence is checked.
 void readOutput(const TableReader& root, OutputOptions& out, double tEnd);

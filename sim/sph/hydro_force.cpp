@@ -31,7 +31,7 @@
 // V_ij^2 = ((1/rho_i + 1/rho_j)/2)^2:
 //   a_i = -sum_j m_j P*_ij V_ij^2 [grad W(h_i) + grad W(h_j)]
 //   du_i/dt = sum_j m_j P*_ij V_ij^2 (v_i . n - u*_ij) |dW(h_i) + dW(h_j)|,
-// so that the pair's work on i, m_i (v_i . a_i + du_i/dt), is m_i m_j P*_ij V_ij^2 |dW| u*_ij,
+// so that the pair's work on i, m_i (v_i . a_i + du_i/dt), is -m_i m_j P*_ij V_ij^2 |dW| u*_ij,
 // which j's cancels (its n and u* reversed): total energy is conserved, as is momentum (P* is the
 // same seen from either side).
 #include "sim/sph/hydro_force.hpp"
@@ -103,7 +103,8 @@ void fillPressureTerms(const ParticleSet& p, std::vector<double>& out, TermParti
 // which in a blast held the hot interior back (docs/verification.md). Dissipation on approach
 // only, as the artificial viscosity's (and the low-dissipation limiter of Zhang, Hu & Adams,
 // J. Comput. Phys. 335, 605, 2017). Solved with the lower index on the left, so that both sides
-// of the pair see the same P* to the last bit (momentum to round-off).
+// of a pair of real particles see the same P* to the last bit (through a periodic image, whose
+// index follows the real ones, the two sides solve it mirrored: the same to round-off).
 template <int D>
 StarState pairStar(const PairOrigin& o, const Pair& g, const ParticleSet& p, const double* vi,
                    const double* G) {
@@ -371,7 +372,8 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
 
       // Hoop rate v_r / r of RZ, with the smoothed radius near the axis (docs/rz.md).
       const double hoopRate = RZ ? vi[0] * ws.dSmoothedR[i] / ws.smoothedR[i] : 0.0;
-      double dudt = dudtViscous + dudtConduction + dudtRiemann;
+      double dudt = dudtViscous + dudtConduction;
+      if constexpr (Godunov) dudt += dudtRiemann;
       double divergence;  // div v of the pair weights, for the continuity density
       if constexpr (Solid) {
         Mat3 L{};

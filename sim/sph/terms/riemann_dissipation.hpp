@@ -14,9 +14,11 @@
 // 2a w for a strong one); a side that the contact moves away from takes the acoustic
 // rarefaction, P* - P_K = rho_K c_K w. For an ideal gas with gamma = 1.4 it is therefore exact
 // when both waves are shocks and the linearised solver for weak waves. It needs of each side
-// only its density, velocity, pressure and sound speed, so it applies to any equation of state:
-// for a liquid or a solid 2a stands for the Hugoniot's U_s - u_p slope s (1.2-1.6 for metals and
-// rock; S. P. Marsh, "LASL Shock Hugoniot Data", 1980), which the single a = 0.6 approximates.
+// only its density, velocity, pressure and sound speed, so it can be applied to any equation of
+// state, with two approximations there: a liquid's or a solid's shock speed is U_s = c + s w
+// (s = 1.2-1.9; S. P. Marsh, "LASL Shock Hugoniot Data", 1980), which this W meets only in the
+// strong limit (2a = 1.2) and undershoots by (s - a) w for weak shocks; and a strong rarefaction
+// (a detonation's products beside air) is far from acoustic (its u* several times too small).
 // Equal pressures and velocities give P* = P and u* = u (a contact feels no dissipation).
 #include <algorithm>
 #include <cmath>
@@ -56,30 +58,40 @@ inline double pressureSlope(const RiemannSide& K, double w) {
 
 inline StarState twoShockStar(const RiemannSide& L, const RiemannSide& R) {
   const double ZL = L.rho * L.c, ZR = R.rho * R.c;  // acoustic impedances
-  // Both sides without sound speed or density (no wave can separate them): their mean.
-  if (!(ZL + ZR > 0.0)) return {0.5 * (L.P + R.P), 0.5 * (L.u + R.u)};
-  // u* where both sides reach one pressure, P_L + dP_L(u_L - u*) = P_R + dP_R(u* - u_R): Newton's
-  // method from the acoustic solution. The difference falls monotonically in u* and is convex on
-  // either side of its kink, as the exact solver's pressure function is (Toro sec. 4.3.1), so
-  // the iteration converges from the acoustic start (Toro test 5's pair of shocks: a few steps to
-  // 1e-12).
-  double u = (ZL * L.u + ZR * R.u + L.P - R.P) / (ZL + ZR);
-  // Pressures agree when they differ by round-off of the terms that make them.
-  const double tolerance =
-      1e-12 * (std::abs(L.P) + std::abs(R.P) +
-               (ZL + ZR) * (std::abs(L.u) + std::abs(R.u) + L.c + R.c));
+  const bool approaching = L.u > R.u;
+  // The start: the acoustic solution, or where the two sides approach faster than sound (or have
+  // none: a cold gas) the strong shocks' own, rho_L (u_L - u)^2 = rho_R (u - u_R)^2.
+  double u;
+  if (approaching && L.u - R.u > L.c + R.c) {
+    const double sL = std::sqrt(L.rho), sR = std::sqrt(R.rho);
+    if (!(sL + sR > 0.0)) return {0.5 * (L.P + R.P), 0.5 * (L.u + R.u)};
+    u = (sL * L.u + sR * R.u) / (sL + sR);
+  } else {
+    // Neither sound nor a collision (two cold gases parting): no wave joins them.
+    if (!(ZL + ZR > 0.0)) return {0.5 * (L.P + R.P), 0.5 * (L.u + R.u)};
+    u = (ZL * L.u + ZR * R.u + L.P - R.P) / (ZL + ZR);
+  }
+  // u* where both sides reach one pressure, P_L + dP_L(u_L - u*) = P_R + dP_R(u* - u_R), by
+  // Newton's method. The difference falls monotonically in u*, with kinks where either side turns
+  // from rarefaction to shock, convex below an inflection and concave above it, as the exact
+  // solver's pressure function (Toro sec. 4.3.1): Newton converges from either start (Toro's test
+  // 5: 4 steps to round-off). Converged when the two pressures differ by round-off of the terms
+  // that make them.
   double dPL = pressureChange(L, L.u - u), dPR = pressureChange(R, u - R.u);
-  // Two rarefactions (most pairs of an expanding flow) are acoustic already: no step.
   for (int step = 0; step < kMaxNewtonSteps; ++step) {
     const double mismatch = L.P + dPL - R.P - dPR;
-    if (!(std::abs(mismatch) > tolerance)) break;
-    u += mismatch / (pressureSlope(L, L.u - u) + pressureSlope(R, u - R.u));
+    const double scale = std::abs(L.P) + std::abs(R.P) + std::abs(dPL) + std::abs(dPR);
+    if (!(std::abs(mismatch) > 1e-12 * scale)) break;
+    const double slope = pressureSlope(L, L.u - u) + pressureSlope(R, u - R.u);
+    if (!(slope > 0.0)) break;  // both sides without sound and without a shock: no better u
+    u += mismatch / slope;
     dPL = pressureChange(L, L.u - u);
     dPR = pressureChange(R, u - R.u);
   }
-  // The two sides' pressures agree to the tolerance: their mean, the same from either side.
+  // The two sides' pressures agree to round-off: their mean, the same from either side.
   double P = 0.5 * (L.P + dPL + R.P + dPR);
-  // The acoustic rarefaction can overshoot below vacuum: no tension where neither side has any.
+  // Acoustic rarefactions pulled apart faster than sound would give a gas tension: none where
+  // neither side has any. (The force pass never reaches it: a receding pair has no jump there.)
   P = std::max(P, std::min({L.P, R.P, 0.0}));
   return {P, u};
 }
