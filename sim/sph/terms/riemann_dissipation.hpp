@@ -7,7 +7,7 @@
 // particles along their axis, and the energy equation's velocity with its star velocity u*.
 //
 // The solver (after Toro, "Riemann Solvers and Numerical Methods for Fluid Dynamics", 3rd ed.,
-// 2009, ch. 4 and sec. 9.4) finds u* where the two sides' pressures meet: a side whose velocity
+// 2009: ch. 4's pressure functions, ch. 9's two-shock approximation) finds u* where the two sides' pressures meet: a side whose velocity
 // drops by w > 0 towards the contact is shocked, P* - P_K = rho_K w W_K with the shock's speed
 // relative to the gas ahead W_K = a w + sqrt((a w)^2 + c_K^2), a = (gamma + 1)/4 (the ideal gas's
 // Rankine-Hugoniot relations solved for the shock speed; acoustic, W = c, for a weak shock and
@@ -74,9 +74,8 @@ inline StarState twoShockStar(const RiemannSide& L, const RiemannSide& R) {
   // u* where both sides reach one pressure, P_L + dP_L(u_L - u*) = P_R + dP_R(u* - u_R), by
   // Newton's method. The difference falls monotonically in u*, with kinks where either side turns
   // from rarefaction to shock, convex below an inflection and concave above it, as the exact
-  // solver's pressure function (Toro sec. 4.3.1): Newton converges from either start (Toro's test
-  // 5: 4 steps to round-off). Converged when the two pressures differ by round-off of the terms
-  // that make them.
+  // solver's pressure function (Toro sec. 4.3): Newton converges from either start. Converged
+  // when the two pressures differ by round-off of the terms that make them.
   double dPL = pressureChange(L, L.u - u), dPR = pressureChange(R, u - R.u);
   for (int step = 0; step < kMaxNewtonSteps; ++step) {
     const double mismatch = L.P + dPL - R.P - dPR;
