@@ -110,9 +110,10 @@ std::vector<SceneTable> runTables() {
                "reconstructed as `sph.viscosity.reconstruction` says (default `\"monotone\"` "
                "with it); `[sph.viscosity]` alpha and beta then set only the time step's signal "
                "speed and its switch and Balsara's factor do nothing, while `[sph.conductivity]` "
-               "adds to it; fluids, Lagrangian form, summation density, kernel gradient, mass "
-               "volumes, 1D/2D/3D, global steps, one rank (`docs/verification.md`, "
-               "\"Riemann-solver dissipation\")"),
+               "adds to it (in RZ it holds the axis without it: `docs/rz.md`); fluids, "
+               "Lagrangian form, summation density, kernel gradient, mass volumes, 1D/2D/3D/RZ, "
+               "global steps, one rank (`docs/verification.md`, \"Riemann-solver "
+               "dissipation\")"),
         table("artificial_stress", "defaults below",
               "`[sph.artificial_stress]`: Monaghan (2000) against the tensile instability; "
               "solids only")}},

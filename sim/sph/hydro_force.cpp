@@ -23,17 +23,18 @@
 //                     + (r_i/r_j) P_j/(Omega_j rho_j^2) grad W(h_j)],
 // with the energy equation to match: the Lagrangian derivation with X held fixed through the
 // step, still antisymmetric in each pair.
-// With sph.dissipation = "riemann" (fluids, Lagrangian form, kernel gradient, 1D/2D/3D) there is
-// no artificial viscosity; each pair's pressure is the star pressure P*_ij of its Riemann problem
-// along n = (x_j - x_i)/r (sim/sph/terms/riemann_dissipation.hpp; Inutsuka 2002), the approaching
-// velocities reconstructed to the midpoint as the reconstructed viscosity does, receding ones
-// without a jump (pairStar below), and the pair volume squared is Inutsuka's lowest order
-// V_ij^2 = ((1/rho_i + 1/rho_j)/2)^2:
-//   a_i = -sum_j m_j P*_ij V_ij^2 [grad W(h_i) + grad W(h_j)]
-//   du_i/dt = sum_j m_j P*_ij V_ij^2 (v_i . n - u*_ij) |dW(h_i) + dW(h_j)|,
+// With sph.dissipation = "riemann" (fluids, Lagrangian form, kernel gradient, 1D/2D/3D/RZ) there
+// is no artificial viscosity; each pair's pressure is the star pressure P*_ij of its Riemann
+// problem along n = (x_j - x_i)/r (sim/sph/terms/riemann_dissipation.hpp; Inutsuka 2002), the
+// approaching velocities reconstructed to the midpoint as the reconstructed viscosity does,
+// receding ones without a jump (pairStar below), and the pair volume squared is Inutsuka's lowest
+// order V_ij^2 = ((1/rho_i + 1/rho_j)/2) ((1/s_i + 1/s_j)/2), s as above (so ((1/rho_i +
+// 1/rho_j)/2)^2 but in RZ, where it is the pair mean of each of P/(rho eta)'s two factors):
+//   a_i = -sum_j m_j P*_ij V_ij^2 [grad W(h_i) + grad W(h_j)]   (+ RZ's hoop term, as below)
+//   du_i/dt = sum_j m_j P*_ij V_ij^2 (v_i . n - u*_ij) |dW(h_i) + dW(h_j)|   (- its work),
 // so that the pair's work on i, m_i (v_i . a_i + du_i/dt), is -m_i m_j P*_ij V_ij^2 |dW| u*_ij,
 // which j's cancels (its n and u* reversed): total energy is conserved, as is momentum (P* is the
-// same seen from either side).
+// same seen from either side; in RZ the axial momentum).
 #include "sim/sph/hydro_force.hpp"
 
 #include "sim/solid/porosity.hpp"
@@ -169,15 +170,14 @@ void splitAtHalos(const ParticleSet& p, const HydroWorkspace& ws, std::size_t fi
 // Weighted: the generalised volumes' pressure terms (ws.volumeWeight; fluids, Lagrangian form,
 // kernel gradient, 1D/2D/3D), a template parameter so that the other passes pay nothing for them.
 // Godunov: the Riemann-solver dissipation in place of the viscosity (fluids, Lagrangian form,
-// kernel gradient, mass volumes).
+// kernel gradient, mass volumes; planar or RZ).
 template <template <int> class K, int D, bool RZ, MomentumForm Form, bool Solid, bool Iad = false,
           bool Weighted = false, bool Godunov = false>
 void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
                    const std::vector<std::size_t>* active) {
   static_assert(!Iad || (!RZ && !Solid && Form == MomentumForm::Lagrangian));
   static_assert(!Weighted || (!RZ && !Solid && !Iad && Form == MomentumForm::Lagrangian));
-  static_assert(!Godunov ||
-                (!RZ && !Solid && !Iad && !Weighted && Form == MomentumForm::Lagrangian));
+  static_assert(!Godunov || (!Solid && !Iad && !Weighted && Form == MomentumForm::Lagrangian));
   const SphOptions& sph = ws.sph;
   const std::size_t nReal = p.numReal;
   constexpr bool kInterface = Form == MomentumForm::Interface;
@@ -305,9 +305,13 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
           // on both kernels: the same for i and j. (The grad-h weights 1/(Omega rho^2) of each
           // side, as the viscosity's pressure terms take them, put 1/rho^2 of the cold side of a
           // shock on P*: with a first version of the solver the 1D Sedov shell then ran 2.5%
-          // behind, L1 0.26, against 1.1% and 0.09 with these.)
+          // behind, L1 0.26, against 1.1% and 0.09 with these.) In RZ the kernel sums are of
+          // ring masses and the pressure term's 1/(rho eta) becomes the product of its two
+          // factors' pair means: with the hoop term it then gives the 3D gradient of P over rho,
+          // as the standard RZ form does (docs/rz.md).
           const double volume = 0.5 * (pressureTerm[i] + pressureTerm[j]);  // 1/rho each
-          const double weight = g.mj * volume * volume * (g.dWi + g.dWj);
+          const double area = RZ ? 0.5 * (1.0 / o.sigma + 1.0 / g.sigmaJ) : volume;
+          const double weight = g.mj * volume * area * (g.dWi + g.dWj);
           const double f = star.P * weight * g.rInv;
           double ui = 0.0;  // v_i . n
           for (int d = 0; d < D; ++d) {
@@ -460,13 +464,12 @@ void runForcePass(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
   const bool weighted = !ws.volumeWeight.empty();
   dispatchHydro(ws, [&]<template <int> class K, int D, bool RZ>() {
     if (ws.sph.dissipation == Dissipation::Riemann) {
-      if (weighted || solid || RZ || form != MomentumForm::Lagrangian ||
+      if (weighted || solid || form != MomentumForm::Lagrangian ||
           ws.sph.gradients != GradientScheme::Kernel)
         throw std::logic_error("riemann dissipation: fluids, the Lagrangian form, the kernel "
-                               "gradient, mass volumes, 1D/2D/3D");
-      if constexpr (!RZ)
-        forcePassImpl<K, D, false, MomentumForm::Lagrangian, false, false, false, true>(p, ws, halos,
-                                                                                      active);
+                               "gradient, mass volumes");
+      forcePassImpl<K, D, RZ, MomentumForm::Lagrangian, false, false, false, true>(p, ws, halos,
+                                                                                 active);
       return;
     }
     if (ws.sph.gradients == GradientScheme::IntegralApproach) {
