@@ -478,14 +478,16 @@ void Simulation::refuseUnbuiltSphOptions() const {
   // What none of the options is built for. (The materials, not the particles' stress columns: those
   // are added by the strength package after this check.)
   const bool solid = materials_.anyStrength() || materials_.anyFracture();
-  auto unbuilt = [&](const std::string& oneRank, bool rzBuilt = false) -> std::string {
+  auto unbuilt = [&](const std::string& oneRank, bool rzBuilt = false,
+                     bool stepsBuilt = false) -> std::string {
     if (domain_.distributed()) return oneRank;
     if (!rzBuilt && scene_.geometry == Geometry::Axisymmetric)
       return "is built for 1D, 2D and 3D, not RZ";
     if (solid) return "is built for fluids (a material here has strength or fracture)";
     if (sph.form != MomentumForm::Lagrangian) return "takes the Lagrangian form";
     if (sph.density != DensityMethod::Summation) return "takes summation density";
-    if (scene_.time.stepping != Stepping::Global) return "runs with global time steps";
+    if (!stepsBuilt && scene_.time.stepping != Stepping::Global)
+      return "runs with global time steps";
     return "";
   };
   if (sph.volumeElements == VolumeElements::Generalised) {
@@ -496,7 +498,7 @@ void Simulation::refuseUnbuiltSphOptions() const {
                             "; use volume_elements = \"mass\"");
   }
   if (sph.dissipation == Dissipation::Riemann) {
-    std::string why = unbuilt("runs on one rank (not yet compared across ranks)", true);
+    std::string why = unbuilt("runs on one rank (not yet compared across ranks)", true, true);
     if (why.empty() && sph.gradients != GradientScheme::Kernel) why = "takes the kernel gradient";
     if (why.empty() && sph.volumeElements != VolumeElements::Mass) why = "takes mass volumes";
     if (!why.empty())

@@ -154,8 +154,8 @@ class Simulation {
   }
   // h from the continuity density (SmoothingLengthMethod::Neighbours), held at the caps.
   // Throws where sph.gradients = "iad" (sim/sph/iad_matrix.hpp), sph.volume_elements =
-  // "generalised" or sph.dissipation = "riemann" is not built: more than one rank, RZ (but for
-  // "riemann"), solids, the interface form, continuity density, individual steps; and
+  // "generalised" or sph.dissipation = "riemann" is not built: more than one rank, RZ and
+  // individual steps (but for "riemann"), solids, the interface form, continuity density; and
   // combinations of them.
   void refuseUnbuiltSphOptions() const;
   void smoothingLengthFromDensity();

@@ -24,8 +24,8 @@ Scene validate(const toml::table& doc, const std::string& sourceName) {
   scene.sourcePath = sourceName;
   readScene(root, scene);
   readDomain(root, scene);
-  readSph(root, scene.sph);
   readTime(root, scene.time);
+  readSph(root, scene.sph, scene.time.stepping);
   readOutput(root, scene.output, scene.time.tEnd);
   readMaterials(root, scene);
   checkGradientScheme(root, scene);
