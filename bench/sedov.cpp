@@ -12,7 +12,8 @@
 //                      [--stepping global|individual] [--limiter-factor F]
 //                      [--alpha A] [--beta B] [--switch none|morris_monaghan]
 //                      [--reconstruction none|monotone|van_leer]   (default none; monotone
-//                      with --dissipation riemann, as in a scene)  [--gradients kernel|iad]
+//                      with --dissipation riemann and global steps, as in a scene)
+//                      [--gradients kernel|iad]
 //                      [--volume-exponent P]   (generalised volume elements X = (m/rho)^P)
 //                      [--dissipation viscosity|riemann]   (riemann: Godunov SPH)
 //   ejecta_bench_sedov --chart DIR [--threads T]
@@ -84,10 +85,11 @@ std::string configure(const Config& c, Scene& scene) {
     return "--switch must be none or morris_monaghan, not " + c.viscositySwitch;
   scene.sph.viscositySwitch =
       c.viscositySwitch == "morris_monaghan" ? ViscositySwitch::MorrisMonaghan : ViscositySwitch::None;
-  // Unset: none, or monotone with the Riemann dissipation (as the scene reader's default).
+  // Unset: none, or monotone with the Riemann dissipation and global steps (the scene reader's
+  // default; docs/time_steps.md, "Godunov SPH on time bins").
+  const bool riemannGlobal = c.dissipation == "riemann" && c.stepping == "global";
   const std::string reconstruction =
-      !c.reconstruction.empty() ? c.reconstruction
-                                : (c.dissipation == "riemann" ? "monotone" : "none");
+      !c.reconstruction.empty() ? c.reconstruction : (riemannGlobal ? "monotone" : "none");
   if (reconstruction == "monotone") scene.sph.viscosityReconstruction = ViscosityReconstruction::Monotone;
   else if (reconstruction == "van_leer") scene.sph.viscosityReconstruction = ViscosityReconstruction::VanLeer;
   else if (reconstruction != "none")

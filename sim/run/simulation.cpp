@@ -617,22 +617,53 @@ void Simulation::checkHealth(double dt, const std::vector<std::size_t>* only) co
   };
   stopIfAnyRankFailed(problem());
   if (dt < dtMin) {
-    // The particle with the fastest sound crossing names the problem: the rank holding the
-    // fastest one reports it (dt is the same on every rank).
-    std::size_t worst = 0;
-    double fastest = 0.0;
-    for (std::size_t i = 0; i < p_.numReal; ++i)
-      if (p_.cs[i] / p_.h[i] > fastest || i == 0) {
-        worst = i;
-        fastest = p_.cs[i] / p_.h[i];
-      }
-    // Every rank takes part in the reduction, one without particles too.
-    const double fastestAnywhere = domain_.comm().maximum(fastest);
-    const bool mine = p_.numReal > 0 && fastest >= fastestAnywhere;
+    // The particle whose own limit is the tightest names the problem, with the criterion that
+    // set it: the rank holding it reports (dt is the same on every rank; every rank takes part
+    // in the reduction, one without particles too).
+    const StepLimit tightest = tightestStepLimit();
+    const double anywhere = domain_.comm().minimum(tightest.dt);
+    const bool mine = p_.numReal > 0 && tightest.dt <= anywhere;
     std::ostringstream s;
-    s << "time step " << dt << " s fell below dt_min " << dtMin << " s";
-    stopIfAnyRankFailed(mine ? failureMessage(worst, s.str()) : std::string());
+    s << "time step " << dt << " s fell below dt_min " << dtMin << " s; tightest limit: the "
+      << tightest.criterion << " step, " << tightest.dt << " s, of";
+    stopIfAnyRankFailed(mine ? failureMessage(tightest.particle, s.str()) : std::string());
   }
+}
+
+Simulation::StepLimit Simulation::tightestStepLimit() const {
+  // The criteria of computeNextTimestep and ownTimesteps, particle by particle (only on the way
+  // to a stop: the packages' votes are asked of every particle).
+  const SphOptions& sph = scene_.sph;
+  const bool individual = scene_.time.stepping == Stepping::Individual;
+  const std::size_t n = p_.numReal;
+  std::vector<double> limit(n, std::numeric_limits<double>::infinity());
+  std::vector<std::string> criterion(n, "no");
+  auto lower = [&](std::size_t i, double dt, const std::string& name) {
+    if (dt < limit[i]) {
+      limit[i] = dt;
+      criterion[i] = name;
+    }
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    if (individual || !isolated(i))
+      lower(i, courantTimestep(sph, p_.h[i], p_.cs[i], p_.divv[i], closingSpeedOf(i)), "Courant");
+    double a2 = 0.0;
+    for (int d = 0; d < 3; ++d) a2 += p_.a[d][i] * p_.a[d][i];
+    lower(i, forceTimestep(sph, p_.h[i], a2), "force");
+    if (individual) lower(i, conductionTimestepOf(i), "conduction");
+  }
+  std::vector<std::size_t> all(n);
+  std::iota(all.begin(), all.end(), std::size_t{0});
+  const PackageContext context = packageContext();
+  for (const auto& package : packages_) {
+    std::vector<double> vote(n, std::numeric_limits<double>::infinity());
+    package->particleTimesteps(p_, context, all, vote);
+    for (std::size_t i = 0; i < n; ++i) lower(i, vote[i], package->name() + " package's");
+  }
+  StepLimit tightest{0, std::numeric_limits<double>::infinity(), "no"};
+  for (std::size_t i = 0; i < n; ++i)
+    if (limit[i] < tightest.dt) tightest = {i, limit[i], criterion[i]};
+  return tightest;
 }
 
 namespace {

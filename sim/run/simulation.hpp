@@ -164,6 +164,14 @@ class Simulation {
   // Stops the run (SimulationError on every rank) on a bad state or a step below dt_min; `only`:
   // check just those particles (ascending), the others being known good.
   void checkHealth(double dt, const std::vector<std::size_t>* only = nullptr) const;
+  // The real particle with the tightest own step limit, the limit and the criterion that set it
+  // (Courant, force, conduction or a package's), for checkHealth's dt_min diagnosis.
+  struct StepLimit {
+    std::size_t particle;
+    double dt;
+    std::string criterion;
+  };
+  StepLimit tightestStepLimit() const;
   // Throws SimulationError naming the step, time, `reason` and particle i's state.
   [[noreturn]] void failAt(std::size_t i, const std::string& reason) const;
   std::string failureMessage(std::size_t i, const std::string& reason) const;

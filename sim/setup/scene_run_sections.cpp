@@ -197,7 +197,7 @@ void readSph(const TableReader& root, SphOptions& sph, Stepping stepping) {
     // (second order where the flow is smooth); "none" in [sph.viscosity] keeps the first order.
     // Not by default with individual steps: an inactive neighbour's gradient is its last
     // evaluation's beside its predicted velocity, and the RZ Sedov's L1(rho) was then 10% above
-    // the global run's (without: within 1%, docs/verification.md).
+    // the global run's (without: within 1%, docs/time_steps.md, "Godunov SPH on time bins").
     const toml::table* vt = r.optTable("viscosity");
     if (!vt || !vt->contains("reconstruction"))
       sph.viscosityReconstruction = stepping == Stepping::Global ? ViscosityReconstruction::Monotone

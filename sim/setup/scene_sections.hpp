@@ -28,7 +28,7 @@ void readSph(const TableReader& root, SphOptions& sph, Stepping stepping);
 void checkGradientScheme(const TableReader& root, const Scene& scene);
 // sph.volume_elements = "generalised" against the geometry, the stepping and the materials.
 void checkVolumeElements(const TableReader& root, const Scene& scene);
-// sph.dissipation = "riemann" against the geometry, the stepping and the materials.
+// sph.dissipation = "riemann" against the materials.
 void checkDissipation(const TableReader& root, const Scene& scene);
 // tEnd: the run's length (read first), against which the snapshot cadence is checked.
 void readOutput(const TableReader& root, OutputOptions& out, double tEnd);

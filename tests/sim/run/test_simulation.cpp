@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -133,6 +134,34 @@ TEST(Simulation, TimeStepUnderflowStopsTheRunAndLeavesALastSnapshot) {
   EXPECT_NE(r.error.find("dt_min"), std::string::npos) << r.error;
   EXPECT_TRUE(fs::exists(dir / "snapshots" / "snap_0000.h5"));
   EXPECT_TRUE(fs::exists(dir / "summary.json"));
+}
+
+// The diagnosis names the particle with the tightest own limit and the criterion that set it:
+// in the blast, the Courant step of a particle with the deposit's energy (u far above the
+// ambient gas's), with global and with individual steps.
+TEST(Simulation, TimeStepUnderflowNamesTheLimitingCriterionAndParticle) {
+  for (const char* stepping : {"global", "individual"}) {
+    const Scene scene = parseScene(kBlastScene, "test_blast.toml",
+                                   {"time.dt_min=1.0", std::string("time.stepping=") + stepping});
+    Simulation sim(scene, buildParticles(scene, MaterialTable::fromScene(scene)),
+                   MaterialTable::fromScene(scene), 1);
+    const RunOutcome r = runSimulation(sim, RunOptions{});
+    ASSERT_FALSE(r.ok) << stepping;
+    std::printf("  %s: %s\n", stepping, r.error.c_str());
+    EXPECT_NE(r.error.find("tightest limit: the Courant step"), std::string::npos)
+        << stepping << ": " << r.error;
+    const ParticleSet& p = sim.particles();
+    double uLowest = p.u[0], uHighest = p.u[0];
+    for (std::size_t i = 0; i < p.numReal; ++i) {
+      uLowest = std::min(uLowest, p.u[i]);
+      uHighest = std::max(uHighest, p.u[i]);
+    }
+    // describeParticle prints u: it must be a hot one (the deposit raises u by orders).
+    const auto at = r.error.find(" u=");
+    ASSERT_NE(at, std::string::npos) << r.error;
+    const double u = std::stod(r.error.substr(at + 3));
+    EXPECT_GT(u, 0.5 * uHighest) << stepping << ": " << r.error << " (lowest u " << uLowest << ")";
+  }
 }
 
 }  // namespace
