@@ -19,17 +19,31 @@ double blastDistance(const ParticleSet& p, std::size_t i, const std::array<doubl
 BlastShock blastShock(const ParticleSet& p, const std::array<double, 3>& centre, int dim,
                       double binWidth, double rMax) {
   const int bins = static_cast<int>(rMax / binWidth) + 1;
-  std::vector<double> binRho(bins, 0.0), binMass(bins, 0.0);
+  std::vector<double> binRho(bins, 0.0), binP(bins, 0.0), binMass(bins, 0.0);
   for (std::size_t i = 0; i < p.numReal; ++i) {
     const int b = static_cast<int>(blastDistance(p, i, centre, dim) / binWidth);
-    if (b < bins) { binRho[b] += p.mass[i] * p.rho[i]; binMass[b] += p.mass[i]; }
+    if (b < bins) {
+      binRho[b] += p.mass[i] * p.rho[i];
+      binP[b] += p.mass[i] * p.P[i];
+      binMass[b] += p.mass[i];
+    }
   }
   int peak = 0;
   for (int b = 0; b < bins; ++b) {
-    if (binMass[b] > 0) binRho[b] /= binMass[b];
+    if (binMass[b] > 0) {
+      binRho[b] /= binMass[b];
+      binP[b] /= binMass[b];
+    }
     if (binRho[b] > binRho[peak]) peak = b;
   }
-  return {(peak + 0.5) * binWidth, binRho[peak]};
+  const double radius = (peak + 0.5) * binWidth;
+  double peakPressure = 0.0;
+  for (int b = 0; b < bins; ++b) {
+    const double binCentre = (b + 0.5) * binWidth;
+    if (binCentre >= 0.5 * radius && binCentre <= 1.5 * radius)
+      peakPressure = std::max(peakPressure, binP[b]);
+  }
+  return {radius, binRho[peak], peakPressure};
 }
 
 double centrePressureRatio(const ParticleSet& p, const std::array<double, 3>& centre, int dim,

@@ -15,10 +15,14 @@ namespace ejecta::verify {
 double blastDistance(const ParticleSet& p, std::size_t i, const std::array<double, 3>& c, int dim);
 
 // The shock: the centre of the radial bin (width `binWidth`, out to `rMax`) with the highest
-// mass-weighted mean density, and that density.
+// mass-weighted mean density, and that density; and the shell's peak pressure, the highest
+// mass-weighted mean pressure of the bins from half to one and a half times that radius (not the
+// densest bin's: in a smeared shell the pressure peaks a little behind the density; and not the
+// centre's, whose own measure is centrePressureRatio: a hot 3D centre reads 1.5x the jump).
 struct BlastShock {
   double radius = 0.0;
   double density = 0.0;
+  double pressure = 0.0;
 };
 BlastShock blastShock(const ParticleSet& p, const std::array<double, 3>& centre, int dim,
                       double binWidth, double rMax);

@@ -333,6 +333,7 @@ Report sedov(const std::string& name, const Options& options, int defaultLevels,
         {"shock_radius_exact", Rs, "m"},
         {"shock_radius_error", (shock.radius - Rs) / Rs, "1"},
         {"peak_density_ratio", shock.density / sedovExact.postShockDensity(), "1"},
+        {"peak_pressure_ratio", shock.pressure / sedovExact.postShockPressure(f.time), "1"},
         {"centre_pressure_ratio",
          centrePressureRatio(p, deposit.center, dim, sedovExact, f.time), "1"},
     };

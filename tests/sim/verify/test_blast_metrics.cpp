@@ -68,5 +68,34 @@ TEST(BlastMetrics, ShockIsTheDensestBinAndItsMeanDensity) {
   EXPECT_NEAR(s.density, 4.0, 1e-12);
 }
 
+TEST(BlastMetrics, PeakPressureIsTheShellsHighestBinMean) {
+  ParticleSet p = lineOfParticles(100, kSedov, kTime, [](std::size_t) { return 1.0; });
+  // Every particle at 1 Pa but bin 2 (r in [0.2, 0.3)) at 5 Pa, and two more there, mass 3 at
+  // 3 Pa and mass 1 at 11 Pa (mean 5 too); the densest bin (3, at 4: the shock at 0.35 m) is not
+  // the highest-pressure one; then one particle at 50 Pa in bin 4 (r = 0.45) among its others at
+  // 1 Pa; bins outside the shell (centres below 0.175 m or above 0.525 m) do not count.
+  for (std::size_t k = 0; k < 100; ++k) {
+    p.P[k] = static_cast<int>(p.x[0][k] / 0.1) == 2 ? 5.0 : 1.0;
+    if (static_cast<int>(p.x[0][k] / 0.1) == 3) p.rho[k] = 4.0;
+  }
+  p.resize(102);
+  p.numReal = 102;
+  for (std::size_t k : {100u, 101u}) {
+    p.x[0][k] = 0.255;
+    p.mass[k] = k == 100 ? 3.0 : 1.0;
+    p.rho[k] = 1.0;
+    p.P[k] = k == 100 ? 3.0 : 11.0;
+  }
+  EXPECT_NEAR(blastShock(p, kOrigin, 3, 0.1, 1.0).pressure, 5.0, 1e-12);
+  p.P[0] = p.P[80] = 1e3;  // r = 0.01 (the centre) and 0.81: outside the shell
+  EXPECT_NEAR(blastShock(p, kOrigin, 3, 0.1, 1.0).pressure, 5.0, 1e-12);
+  p.P[44] = 50.0;  // r = 0.45
+  double inBin = 0.0;
+  for (std::size_t k = 0; k < 100; ++k) inBin += static_cast<int>(p.x[0][k] / 0.1) == 4 ? 1.0 : 0.0;
+  const BlastShock s = blastShock(p, kOrigin, 3, 0.1, 1.0);
+  EXPECT_NEAR(s.pressure, (inBin - 1.0 + 50.0) / inBin, 1e-12);
+  EXPECT_NEAR(s.radius, 0.35, 1e-12);  // the shock is still the densest bin
+}
+
 }  // namespace
 }  // namespace ejecta::verify

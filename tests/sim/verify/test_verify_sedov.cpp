@@ -59,6 +59,10 @@ TEST(VerifySedov, AxisymmetricRZTheSeedsCase) {
     EXPECT_LT(nearAxis, 1.3) << "spacing " << run.spacing;
     EXPECT_LT(nearAxis, 1.3 * offAxis) << "spacing " << run.spacing;
   }
+  // The shell's binned peak pressure (blast_metrics.hpp) at 0.05 m: measured 0.785 of the 225.4 Pa
+  // jump, 177 Pa (the seed's own run read 180 Pa; issue 19's goal is 203 Pa, 0.9: not met).
+  // 0.75 bounds it from below as a regression check.
+  EXPECT_GT(r.runs.back().metric("peak_pressure_ratio"), 0.75);
 }
 TEST(VerifySedov, Spherical3D) {
   // 36 particles across the box puts the shock only R/dx = 12.6 spacings from the centre (70-80 in
