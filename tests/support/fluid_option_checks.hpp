@@ -132,6 +132,16 @@ inline void expectReaderRefuses(const std::string& toml, const std::string& key,
   }
 }
 
+// What none of the fluid options (IAD gradients, generalised volumes, Riemann dissipation) is built
+// for, refused by the reader naming `key`: continuity density, the interface form, a material with
+// strength. (Each option's test adds its own: RZ, individual steps, the other options.)
+inline void expectRefusedWhereNoOptionIsBuilt(const std::string& line, const std::string& key) {
+  expectReaderRefuses(optionGasScene(line, "2d", "density = \"continuity\"\n"), key,
+                      "summation density");
+  expectReaderRefuses(optionGasScene(line, "2d", "form = \"interface\"\n"), key, "Lagrangian form");
+  expectReaderRefuses(optionSolidScene(line), key, "granite");
+}
+
 // A scene built in code (a bench) passes no reader: the simulation refuses the option with
 // individual steps itself, naming `key`.
 inline void expectSimulationRefusesIndividualSteps(const std::string& line, const std::string& key) {

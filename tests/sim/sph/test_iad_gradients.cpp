@@ -181,12 +181,9 @@ TEST(IadGradients, RefusedWhereItIsNotBuilt) {
   EXPECT_NO_THROW(parseScene(optionGasScene(kOn, "2d"), "iad.toml"));
   const std::string key = "sph.gradients";
   expectReaderRefuses(optionGasScene(kOn, "rz"), key, "RZ");
-  expectReaderRefuses(optionGasScene(kOn, "2d", "density = \"continuity\"\n"), key,
-                      "summation density");
-  expectReaderRefuses(optionGasScene(kOn, "2d", "form = \"interface\"\n"), key, "Lagrangian form");
+  test::expectRefusedWhereNoOptionIsBuilt(kOn, key);
   expectReaderRefuses(optionGasScene(kOn, "2d", "", "stepping = \"individual\"\n"), key,
                       "global time steps");
-  expectReaderRefuses(test::optionSolidScene(kOn), key, "granite");
 }
 
 // A scene built in code (a bench) passes no reader: the simulation refuses it itself.

@@ -15,6 +15,7 @@
 #include "sim/run/run.hpp"
 #include "sim/io/snapshot.hpp"
 #include "sim/sph/velocity_reconstruction.hpp"
+#include "support/fluid_option_checks.hpp"
 #include "support/periodic_blast.hpp"
 #include "support/quarter_blast.hpp"
 #include "support/viscosity_problems.hpp"
@@ -201,56 +202,17 @@ TEST(ViscosityReconstruction, ASoundWaveIsHardlyDamped) {
 
 // --- Conservation, mirror walls, threads, restarts ----------------------------------------------
 
-// tests/sim/run/test_simulation.cpp's periodic 2D blast with the reconstruction on.
-Simulation makeBlast(const std::string& reconstruction, int threads,
-                     std::vector<std::string> overrides = {}) {
-  // Off the lattice's centre of symmetry: a centred blast has zero total momentum by symmetry
-  // whether or not the pair force conserves it.
-  overrides.push_back("energy_deposits[0].center=[0.1375, 0.0625]");
-  const std::string source = test::periodicBlastScene(
-      "[sph.viscosity]\nreconstruction = \"" + reconstruction + "\"\n");
-  Scene scene = parseScene(source, "reconstruction_blast.toml", overrides);
-  MaterialTable materials = MaterialTable::fromScene(scene);
-  ParticleSet p = buildParticles(scene, materials);
-  return Simulation(scene, std::move(p), std::move(materials), threads);
-}
-
+// tests/sim/run/test_simulation.cpp's periodic 2D blast with the reconstruction on, off the
+// lattice's centre (tests/support/fluid_option_checks.hpp): energy to the integrator's error and
+// momentum to round-off (the pair viscosity is symmetric in i and j, the limiter under r -> 1/r),
+// both reconstructions; bit for bit on 1 and 2 threads.
 TEST(ViscosityReconstruction, StrongBlastConservesEnergyAndMomentum) {
-  for (const char* reconstruction : {"van_leer", "monotone"}) {
-    Simulation sim = makeBlast(reconstruction, 2);
-    RunOptions options;
-    const RunOutcome r = runSimulation(sim, options);
-    ASSERT_TRUE(r.ok) << r.error;
-    std::printf("blast (%s): energy error %.2e, %ld steps\n", reconstruction,
-                r.summary.energy.relativeError, r.summary.steps);
-    // As tests/sim/run/test_simulation.cpp asserts for the plain viscosity (measured ~1e-4 there).
-    EXPECT_LT(std::abs(r.summary.energy.relativeError), 1e-3);
-    // The pair viscosity is symmetric in i and j (the limiter is symmetric under r -> 1/r), so
-    // momentum is conserved to round-off of the sum of |m v|.
-    double scale = 0.0;
-    const ParticleSet& p = sim.particles();
-    for (std::size_t i = 0; i < p.numReal; ++i)
-      scale += p.mass[i] * std::hypot(p.v[0][i], p.v[1][i]);
-    for (int d = 0; d < 2; ++d)
-      EXPECT_LT(std::abs(r.summary.momentum.final[d] - r.summary.momentum.initial[d]),
-                1e-12 * scale);
-  }
+  for (const char* reconstruction : {"van_leer", "monotone"})
+    test::expectBlastConserves({std::string("sph.viscosity.reconstruction=") + reconstruction});
 }
 
 TEST(ViscosityReconstruction, IsIndependentOfThreadCount) {
-  auto run = [](int threads) {
-    Simulation sim = makeBlast("monotone", threads, {"time.t_end=0.006"});
-    RunOptions options;
-    EXPECT_TRUE(runSimulation(sim, options).ok);
-    return sim.particles();
-  };
-  const ParticleSet a = run(2), b = run(1);
-  ASSERT_EQ(a.numReal, b.numReal);
-  for (std::size_t i = 0; i < a.numReal; ++i) {
-    ASSERT_EQ(a.x[0][i], b.x[0][i]) << i;
-    ASSERT_EQ(a.v[1][i], b.v[1][i]) << i;
-    ASSERT_EQ(a.u[i], b.u[i]) << i;
-  }
+  test::expectThreadIndependent({"sph.viscosity.reconstruction=monotone"});
 }
 
 TEST(ViscosityReconstruction, RestartMatchesAnUninterruptedRunBitForBit) {

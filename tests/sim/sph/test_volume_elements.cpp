@@ -140,16 +140,13 @@ TEST(VolumeElements, RefusedWhereItIsNotBuilt) {
   const std::string key = "sph.volume_elements";
   expectReaderRefuses(optionGasScene(kOn, "2d", "gradients = \"iad\"\n"), key, "kernel gradient");
   expectReaderRefuses(optionGasScene(kOn, "rz"), key, "RZ");
-  expectReaderRefuses(optionGasScene(kOn, "2d", "density = \"continuity\"\n"), key,
-                      "summation density");
-  expectReaderRefuses(optionGasScene(kOn, "2d", "form = \"interface\"\n"), key, "Lagrangian form");
+  test::expectRefusedWhereNoOptionIsBuilt(kOn, key);
   expectReaderRefuses(optionGasScene(kOn, "2d", "", "stepping = \"individual\"\n"), key,
                       "global time steps");
   expectReaderRefuses(optionGasScene(kOn, "2d", "volume_exponent = 1.5\n"), "sph.volume_exponent",
                       "[0, 1]");
   expectReaderRefuses(optionGasScene(kOn, "2d", "volume_exponent = -0.1\n"), "sph.volume_exponent",
                       "[0, 1]");
-  expectReaderRefuses(test::optionSolidScene(kOn), key, "granite");
 }
 
 TEST(VolumeElements, TheSimulationRefusesWhatTheReaderWouldHave) {

@@ -10,31 +10,29 @@
 #include <vector>
 
 #include "sim/verify/verification.hpp"
+#include "support/option_verification.hpp"
 
 namespace ejecta::verify {
 namespace {
 
-Report run(const std::string& problem, std::vector<std::string> overrides, int resolutions = 0) {
-  Options options;
-  options.resolutions = resolutions;
-  options.overrides = std::move(overrides);
-  return runProblem(problem, options);
-}
+using test::blastWithAndWithout;
+using test::kSedov2DAtOneCentimetre;
+using test::runVerification;
+constexpr const char* kRiemann = "sph.dissipation=riemann";
 
 // Sod's tube at 112, 225 and 450 particles. Measured at 450: L1 of rho, v, P 0.00474, 0.0151,
 // 0.00468 (the viscosity's 0.0037, 0.0127, 0.0043: the rarefaction's head and the contact carry
 // more error). Bounds: each about 1.3x its measured value and each level below the coarser one.
 TEST(VerifyRiemannDissipation, SodConvergesToTheExactSolution) {
-  const Report r = run("sod_1d", {"sph.dissipation=riemann"});
+  const Report r = runVerification("sod_1d", {kRiemann});
   const ResolutionRun& f = r.runs.back();
   std::printf("  sod_1d 450: L1 rho %.4g, v %.4g, P %.4g, dE/E %.3g\n", f.metric("L1_density"),
               f.metric("L1_velocity"), f.metric("L1_pressure"), f.energyError);
   EXPECT_LT(f.metric("L1_density"), 0.0062);
   EXPECT_LT(f.metric("L1_velocity"), 0.020);
   EXPECT_LT(f.metric("L1_pressure"), 0.0061);
-  for (std::size_t n = 1; n < r.runs.size(); ++n)
-    for (const char* m : {"L1_density", "L1_velocity", "L1_pressure"})
-      EXPECT_LT(r.runs[n].metric(m), r.runs[n - 1].metric(m)) << m << " at level " << n;
+  for (const char* m : {"L1_density", "L1_velocity", "L1_pressure"})
+    test::expectEachLevelBelowTheLast(r, m);
   EXPECT_LT(std::abs(f.energyError), 1e-4);  // walls, no deposit: the integrator's 2e-6
 }
 
@@ -44,18 +42,14 @@ TEST(VerifyRiemannDissipation, SodConvergesToTheExactSolution) {
 // within a bin of the viscosity's, the peak above 0.88, converging level by level, energy to the
 // 1e-3 of the other Sedov tests (measured 2.4e-4).
 TEST(VerifyRiemannDissipation, Sedov1DLowersTheDensityError) {
-  const Report viscosity = run("sedov_1d", {}), riemann = run("sedov_1d", {"sph.dissipation=riemann"});
-  const ResolutionRun &v = viscosity.runs.back(), &g = riemann.runs.back();
-  std::printf("  sedov_1d: L1 %.4g (viscosity %.4g), shock %.3g (%.3g), peak %.3g, dE/E %.3g\n",
-              g.metric("L1_density"), v.metric("L1_density"), g.metric("shock_radius_error"),
-              v.metric("shock_radius_error"), g.metric("peak_density_ratio"), g.energyError);
+  const auto runs = blastWithAndWithout("sedov_1d", {}, kRiemann, "viscosity");
+  const ResolutionRun &g = runs.finestOption(), &v = runs.finestStandard();
   EXPECT_LT(g.metric("L1_density"), 0.8 * v.metric("L1_density"));
   // The shock radius is a bin's centre (one spacing wide, 0.71% of it at this level).
   EXPECT_LT(std::abs(g.metric("shock_radius_error")),
             std::abs(v.metric("shock_radius_error")) + 0.0075);
   EXPECT_GT(g.metric("peak_density_ratio"), 0.88);
-  for (std::size_t n = 1; n < riemann.runs.size(); ++n)
-    EXPECT_LT(riemann.runs[n].metric("L1_density"), riemann.runs[n - 1].metric("L1_density"));
+  test::expectEachLevelBelowTheLast(runs.option, "L1_density");
   EXPECT_LT(std::abs(g.energyError), 1e-3);
 }
 
@@ -65,18 +59,9 @@ TEST(VerifyRiemannDissipation, Sedov1DLowersTheDensityError) {
 // the centre below 1.6 (margins of 4% and 7%), the shock within the 3% of the other Sedov tests,
 // energy to 1e-3 (measured 8e-5).
 TEST(VerifyRiemannDissipation, Sedov2DLowersTheDensityError) {
-  const std::vector<std::string> coarser = {"bodies[0].spacing=0.01",
-                                            "energy_deposits[0].width=0.02"};
-  std::vector<std::string> withRiemann = coarser;
-  withRiemann.push_back("sph.dissipation=riemann");
-  const ResolutionRun v = run("sedov_2d", coarser, 1).runs.back(),
-                      g = run("sedov_2d", withRiemann, 1).runs.back();
-  std::printf("  sedov_2d 0.01 m: L1 %.4g (viscosity %.4g), shock %.3g (%.3g), peak %.3g (%.3g), "
-              "centre %.3g (%.3g), dE/E %.3g\n",
-              g.metric("L1_density"), v.metric("L1_density"), g.metric("shock_radius_error"),
-              v.metric("shock_radius_error"), g.metric("peak_density_ratio"),
-              v.metric("peak_density_ratio"), g.metric("centre_pressure_ratio"),
-              v.metric("centre_pressure_ratio"), g.energyError);
+  const auto runs =
+      blastWithAndWithout("sedov_2d", kSedov2DAtOneCentimetre, kRiemann, "viscosity", 1);
+  const ResolutionRun &g = runs.finestOption(), &v = runs.finestStandard();
   EXPECT_LT(g.metric("L1_density"), 0.8 * v.metric("L1_density"));
   EXPECT_GT(g.metric("peak_density_ratio"), 0.65);
   EXPECT_LT(g.metric("centre_pressure_ratio"), 1.6);
@@ -94,7 +79,7 @@ TEST(VerifyRiemannDissipation, Sedov2DLowersTheDensityError) {
 // viscosity's own test), L1 at 0.05 m below 0.2 (0.85 of the viscosity's) and falling, the peak
 // above 0.72, the shock within the 3% of the other Sedov tests, energy to 1e-3 (measured 3.8e-4).
 TEST(VerifyRiemannDissipation, SedovRzHoldsTheAxisWithoutConductivity) {
-  const Report r = run("sedov_rz", {"sph.dissipation=riemann", "sph.conductivity.alpha=0"});
+  const Report r = runVerification("sedov_rz", {kRiemann, "sph.conductivity.alpha=0"});
   for (const ResolutionRun& level : r.runs) {
     const double nearAxis = level.metric("near_axis_peak_pressure_ratio"),
                  offAxis = level.metric("off_axis_peak_pressure_ratio");
@@ -124,9 +109,9 @@ TEST(VerifyRiemannDissipation, SedovRzHoldsTheAxisWithoutConductivity) {
 TEST(VerifyRiemannDissipation, TntBarWithTheDetonationProducts) {
   const std::vector<std::string> summation = {"sph.density=summation"};
   std::vector<std::string> withRiemann = summation;
-  withRiemann.push_back("sph.dissipation=riemann");
-  const ResolutionRun v = run("tnt_bar_1d", summation, 1).runs.back(),
-                      g = run("tnt_bar_1d", withRiemann, 1).runs.back();
+  withRiemann.push_back(kRiemann);
+  const ResolutionRun v = runVerification("tnt_bar_1d", summation, 1).runs.back(),
+                      g = runVerification("tnt_bar_1d", withRiemann, 1).runs.back();
   std::printf("  tnt_bar_1d: L1 P %.4g (%.4g), v %.4g (%.4g), rho %.4g (%.4g), front %.3g, "
               "peak %.4g\n",
               g.metric("L1_pressure"), v.metric("L1_pressure"), g.metric("L1_velocity"),

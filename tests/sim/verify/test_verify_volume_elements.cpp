@@ -11,16 +11,14 @@
 #include <vector>
 
 #include "sim/verify/verification.hpp"
+#include "support/option_verification.hpp"
 
 namespace ejecta::verify {
 namespace {
 
-Report run(const std::string& problem, std::vector<std::string> overrides, int resolutions = 0) {
-  Options options;
-  options.resolutions = resolutions;
-  options.overrides = std::move(overrides);
-  return runProblem(problem, options);
-}
+using test::blastWithAndWithout;
+using test::kSedov2DAtOneCentimetre;
+constexpr const char* kGeneralised = "sph.volume_elements=generalised";
 
 // 1D Sedov, the problem's levels (0.01 to 0.0025 m), with the default p = 0.7. Measured at the
 // finest: L1(rho) 0.0796 against 0.0879 with mass volumes (0.0730 with p = 1), the same shock
@@ -28,20 +26,14 @@ Report run(const std::string& problem, std::vector<std::string> overrides, int r
 // the shock within a bin of theirs, converging level by level, energy to the 1e-3 of the other
 // Sedov tests.
 TEST(VerifyVolumeElements, Sedov1DLowersTheDensityError) {
-  const Report mass = run("sedov_1d", {}),
-               generalised = run("sedov_1d", {"sph.volume_elements=generalised"});
-  const ResolutionRun &m = mass.runs.back(), &g = generalised.runs.back();
-  std::printf("  sedov_1d: L1 %.4g (mass volumes %.4g), shock %.3g (%.3g), dE/E %.3g\n",
-              g.metric("L1_density"), m.metric("L1_density"), g.metric("shock_radius_error"),
-              m.metric("shock_radius_error"), g.energyError);
+  const auto runs = blastWithAndWithout("sedov_1d", {}, kGeneralised, "mass volumes");
+  const ResolutionRun &g = runs.finestOption(), &m = runs.finestStandard();
   EXPECT_LT(g.metric("L1_density"), 0.95 * m.metric("L1_density"));
   // The shock radius is a bin's centre (one spacing wide, 0.71% of it at this level): no more
   // than a bin further off.
   EXPECT_LT(std::abs(g.metric("shock_radius_error")),
             std::abs(m.metric("shock_radius_error")) + 0.0075);
-  for (std::size_t n = 1; n < generalised.runs.size(); ++n)
-    EXPECT_LT(generalised.runs[n].metric("L1_density"),
-              generalised.runs[n - 1].metric("L1_density"));
+  test::expectEachLevelBelowTheLast(runs.option, "L1_density");
   EXPECT_LT(std::abs(g.energyError), 1e-3);
 }
 
@@ -52,17 +44,9 @@ TEST(VerifyVolumeElements, Sedov1DLowersTheDensityError) {
 // margins of 3% and 10%), the shock within the 3% of the Sedov tests. (With p = 1 the peak is
 // 0.807 and the centre 1.13 but L1 0.436: docs/verification.md.)
 TEST(VerifyVolumeElements, Sedov2DSharpensTheShellAndEmptiesTheCentre) {
-  const std::vector<std::string> coarser = {"bodies[0].spacing=0.01",
-                                            "energy_deposits[0].width=0.02"};
-  std::vector<std::string> withGeneralised = coarser;
-  withGeneralised.push_back("sph.volume_elements=generalised");
-  const ResolutionRun m = run("sedov_2d", coarser, 1).runs.back(),
-                      r = run("sedov_2d", withGeneralised, 1).runs.back();
-  std::printf("  sedov_2d 0.01 m: L1 %.4g (mass volumes %.4g), shock %.3g, peak %.3g (%.3g), "
-              "centre %.3g (%.3g), dE/E %.3g\n",
-              r.metric("L1_density"), m.metric("L1_density"), r.metric("shock_radius_error"),
-              r.metric("peak_density_ratio"), m.metric("peak_density_ratio"),
-              r.metric("centre_pressure_ratio"), m.metric("centre_pressure_ratio"), r.energyError);
+  const auto runs =
+      blastWithAndWithout("sedov_2d", kSedov2DAtOneCentimetre, kGeneralised, "mass volumes", 1);
+  const ResolutionRun &r = runs.finestOption(), &m = runs.finestStandard();
   EXPECT_LT(r.metric("L1_density"), 0.9 * m.metric("L1_density"));
   EXPECT_GT(r.metric("peak_density_ratio"), 0.74);
   EXPECT_LT(r.metric("centre_pressure_ratio"), 1.45);
