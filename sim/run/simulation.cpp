@@ -13,6 +13,7 @@
 
 #include "sim/setup/bodies.hpp"
 #include "sim/sph/density_pass.hpp"
+#include "sim/sph/velocity_gradient_refresh.hpp"
 #include "sim/sph/iad_matrix.hpp"
 #include "sim/run/packages/phase_fractions_package.hpp"
 #include "sim/run/packages/porosity_package.hpp"
@@ -444,6 +445,12 @@ void Simulation::evaluateDerivatives(const std::vector<std::size_t>* active) {
             ws_.lists.buildPairs<2>(p_, kKernelSupport); break;
     default: ws_.lists.findGhostGathers<3>(p_, ws_.grid, kKernelSupport);
              ws_.lists.buildPairs<3>(p_, kKernelSupport); break;
+  }
+  if (active && reconstruction && scene_.sph.dissipation == Dissipation::Riemann) {
+    // The pairs read their inactive partners' gradients: re-evaluated at the present state
+    // (sim/sph/velocity_gradient_refresh.hpp; the Riemann dissipation runs on one rank).
+    refreshVelocityGradients(p_, ws_, inactivePartners(p_, ws_, *active));
+    boundaries_.refreshGhostTensor(p_, ws_.velocityGradient);
   }
   if (!distributed) {
     runForcePass(p_, ws_, nullptr, active);

@@ -25,7 +25,7 @@ Scene validate(const toml::table& doc, const std::string& sourceName) {
   readScene(root, scene);
   readDomain(root, scene);
   readTime(root, scene.time);
-  readSph(root, scene.sph, scene.time.stepping);
+  readSph(root, scene.sph);
   readOutput(root, scene.output, scene.time.tEnd);
   readMaterials(root, scene);
   checkGradientScheme(root, scene);

@@ -79,7 +79,7 @@ void readDomain(const TableReader& root, Scene& scene) {
   for (int axis = 0; axis < 3; ++axis) readAxis(r, axis, scene.geometry, scene.domain[axis]);
 }
 
-void readSph(const TableReader& root, SphOptions& sph, Stepping stepping) {
+void readSph(const TableReader& root, SphOptions& sph) {
   const toml::table* t = root.optTable("sph");
   if (!t) return;
   const TableReader r(root.context(), *t, "sph", "sph");
@@ -195,13 +195,11 @@ void readSph(const TableReader& root, SphOptions& sph, Stepping stepping) {
             why + "with mass volumes (volume_elements = \"generalised\" is not)");
     // The pair's velocities are reconstructed to its midpoint as the viscosity's would be
     // (second order where the flow is smooth); "none" in [sph.viscosity] keeps the first order.
-    // Not by default with individual steps: an inactive neighbour's gradient is its last
-    // evaluation's beside its predicted velocity, and the RZ Sedov's L1(rho) was then 10% above
-    // the global run's (without: within 1%, docs/time_steps.md, "Godunov SPH on time bins").
+    // With individual steps too: the inactive partners' gradients are re-evaluated at each
+    // sub-step (sim/sph/velocity_gradient_refresh.hpp; docs/time_steps.md).
     const toml::table* vt = r.optTable("viscosity");
     if (!vt || !vt->contains("reconstruction"))
-      sph.viscosityReconstruction = stepping == Stepping::Global ? ViscosityReconstruction::Monotone
-                                                                 : ViscosityReconstruction::None;
+      sph.viscosityReconstruction = ViscosityReconstruction::Monotone;
   }
   if (const toml::table* at = r.optTable("artificial_stress")) {
     const TableReader a(root.context(), *at, "sph.artificial_stress", "sph.artificial_stress");

@@ -112,7 +112,7 @@ std::vector<SceneTable> runTables() {
                "speed and its switch and Balsara's factor do nothing, while `[sph.conductivity]` "
                "adds to it (in RZ it holds the axis without it: `docs/rz.md`); fluids, "
                "Lagrangian form, summation density, kernel gradient, mass volumes, 1D/2D/3D/RZ, "
-               "global or individual steps (with these no reconstruction unless set), one rank "
+               "global or individual steps, one rank "
                "(`docs/verification.md`, \"Riemann-solver dissipation\")"),
         table("artificial_stress", "defaults below",
               "`[sph.artificial_stress]`: Monaghan (2000) against the tensile instability; "
@@ -139,8 +139,7 @@ std::vector<SceneTable> runTables() {
                "shocks, not recommended). The quadratic term takes the raw velocities; "
                "`docs/undex.md`, \"The reconstructed viscosity\". With `sph.dissipation = "
                "\"riemann\"` it reconstructs the Riemann problems' approaching velocities the "
-               "same way and defaults to `\"monotone\"` (`\"none\"` with individual time "
-               "steps)")}},
+               "same way and defaults to `\"monotone\"`")}},
       {"sph.conductivity",
        "`[sph.conductivity]`",
        "",

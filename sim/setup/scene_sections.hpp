@@ -22,8 +22,7 @@ void applyOverride(toml::table& root, const std::string& text, const std::string
 void readScene(const TableReader& root, Scene& scene);
 void readDomain(const TableReader& root, Scene& scene);
 void readTime(const TableReader& root, TimeOptions& time);
-// `stepping` (read first) picks the Riemann dissipation's default reconstruction.
-void readSph(const TableReader& root, SphOptions& sph, Stepping stepping);
+void readSph(const TableReader& root, SphOptions& sph);
 // sph.gradients = "iad" against the geometry, the stepping and the materials (after those).
 void checkGradientScheme(const TableReader& root, const Scene& scene);
 // sph.volume_elements = "generalised" against the geometry, the stepping and the materials.

@@ -133,10 +133,8 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
       const double hInv = 1.0 / h;
       double S = 0.0, dS = 0.0, vdotgrad = 0.0;
       double curl[3] = {0.0, 0.0, 0.0};
-      double gradSum[3][3] = {}, shapeSum[3][3] = {};  // A and M of correctedGradient
-      double vLow[3], vHigh[3];  // range of each velocity component over the gather list
-      offsets.clear();           // x_i - x_j of the gather list, for the range limiter
-      for (int a = 0; a < D; ++a) vLow[a] = vHigh[a] = p.v[a][i];
+      const double vi[3] = {p.v[0][i], p.v[1][i], p.v[2][i]};
+      VelocityGradientSums<D> velocityGradient(vi, monotone, offsets);
       list.clear();
       for (std::size_t k = 0; k < cand.size(); ++k) {
         if (dist2[k] >= reach2) continue;
@@ -150,22 +148,14 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
         dS -= m * (D * w + r * hInv * dw);
         if (r == 0.0) continue;
         const double f = m * dw / r;  // grad W = x_ij f sigma / (m h^(D+1)), scaled below
-        double dx[3] = {0.0, 0.0, 0.0}, dv[3] = {0.0, 0.0, 0.0};
+        double dx[3] = {0.0, 0.0, 0.0}, dv[3] = {0.0, 0.0, 0.0}, vj[3] = {0.0, 0.0, 0.0};
         for (int d = 0; d < D; ++d) {
           dx[d] = xi[d] - p.x[d][j];
-          dv[d] = p.v[d][i] - p.v[d][j];
+          vj[d] = p.v[d][j];
+          dv[d] = vi[d] - vj[d];
           vdotgrad += dv[d] * dx[d] * f;
         }
-        if (gradient)
-          for (int a = 0; a < D; ++a) {
-            for (int b = 0; b < D; ++b) gradSum[a][b] += dv[a] * dx[b] * f;
-            for (int b = a; b < D; ++b) shapeSum[a][b] += dx[a] * dx[b] * f;  // symmetric
-            if (monotone) {
-              vLow[a] = std::min(vLow[a], p.v[a][j]);
-              vHigh[a] = std::max(vHigh[a], p.v[a][j]);
-              offsets.push_back(dx[a]);
-            }
-          }
+        if (gradient) velocityGradient.add(dx, dv, vj, f);
         if constexpr (D == 2) {
           curl[2] += (dv[0] * dx[1] - dv[1] * dx[0]) * f;
         } else if constexpr (D == 3) {
@@ -183,19 +173,7 @@ std::optional<std::size_t> densityPassImpl(ParticleSet& p, HydroWorkspace& ws,
         vdotgrad *= norm * hInv;
         for (double& c : curl) c *= norm * hInv;
       }
-      if (gradient) {
-        for (int a = 0; a < D; ++a)
-          for (int b = 0; b < a; ++b) shapeSum[a][b] = shapeSum[b][a];
-        double G[3][3];
-        correctedGradient<D>(gradSum, shapeSum, G);  // G = 0 where it cannot be inverted
-        if (monotone) {
-          const double vi[3] = {p.v[0][i], p.v[1][i], p.v[2][i]};
-          limitToNeighbourRange<D>(G, vi, vLow, vHigh, offsets.data(), offsets.size() / D);
-        }
-        double* out = &ws.velocityGradient[9 * i];
-        for (int a = 0; a < D; ++a)
-          for (int b = 0; b < D; ++b) out[3 * a + b] = G[a][b];
-      }
+      if (gradient) velocityGradient.finish(&ws.velocityGradient[9 * i]);
       ws.lists.storeGather(t, i, list.data(), list.size());
       ws.neighbourCount[i] = static_cast<std::uint32_t>(list.size());
       p.h[i] = h;

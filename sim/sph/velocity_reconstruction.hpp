@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <vector>
 
 namespace ejecta {
 
@@ -129,5 +130,50 @@ inline double reconstructedApproach(const double dx[3], const double dv[3], cons
   }
   return approach - vanLeerSlope(slopeI, slopeJ);
 }
+
+// A particle's corrected, optionally range-limited velocity gradient, summed pair by pair over its
+// gather list (the density pass; on time bins also the inactive particles an active one's pairs
+// read, sim/sph/velocity_gradient_refresh.hpp): add() each neighbour with its pair weight f, then
+// finish(). `offsets` is the caller's scratch (kept across particles to spare allocations).
+template <int D>
+class VelocityGradientSums {
+ public:
+  VelocityGradientSums(const double vi[3], bool monotone, std::vector<double>& offsets)
+      : monotone_(monotone), offsets_(offsets) {
+    offsets_.clear();  // x_i - x_j of the gather list, for the range limiter
+    for (int a = 0; a < D; ++a) {
+      vi_[a] = vLow_[a] = vHigh_[a] = vi[a];
+    }
+  }
+  // Neighbour j at dx = x_i - x_j with dv = v_i - v_j, its velocity vj and the weight f.
+  void add(const double dx[3], const double dv[3], const double vj[3], double f) {
+    for (int a = 0; a < D; ++a) {
+      for (int b = 0; b < D; ++b) gradSum_[a][b] += dv[a] * dx[b] * f;
+      for (int b = a; b < D; ++b) shapeSum_[a][b] += dx[a] * dx[b] * f;  // symmetric
+      if (monotone_) {
+        vLow_[a] = std::min(vLow_[a], vj[a]);
+        vHigh_[a] = std::max(vHigh_[a], vj[a]);
+        offsets_.push_back(dx[a]);
+      }
+    }
+  }
+  // The gradient into out[9] (row-major dv_a/dx_b; 0 beyond D).
+  void finish(double* out) {
+    for (int a = 0; a < D; ++a)
+      for (int b = 0; b < a; ++b) shapeSum_[a][b] = shapeSum_[b][a];
+    double G[3][3];
+    correctedGradient<D>(gradSum_, shapeSum_, G);  // G = 0 where it cannot be inverted
+    if (monotone_)
+      limitToNeighbourRange<D>(G, vi_, vLow_, vHigh_, offsets_.data(), offsets_.size() / D);
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) out[3 * a + b] = a < D && b < D ? G[a][b] : 0.0;
+  }
+
+ private:
+  bool monotone_;
+  std::vector<double>& offsets_;
+  double vi_[3] = {}, vLow_[3] = {}, vHigh_[3] = {};
+  double gradSum_[3][3] = {}, shapeSum_[3][3] = {};  // A and M of correctedGradient
+};
 
 }  // namespace ejecta

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 
+#include "sim/io/snapshot.hpp"
 #include "sim/run/run.hpp"
 #include "sim/setup/scene.hpp"
 
@@ -68,6 +69,27 @@ inline void runAndResumeFromSnapshot2(const std::string& source, const std::file
   options.packages = packages;
   const RunOutcome resumed = restartRun(cut.string(), options);
   ASSERT_TRUE(resumed.ok) << resumed.error;
+}
+
+// After runAndResumeFromSnapshot2: full/ and cut/ last snapshots (snap_0004) are the same to the
+// last bit: step, time, positions, velocities, energies, densities and smoothing lengths.
+inline void expectLastSnapshotsMatch(const std::filesystem::path& full,
+                                     const std::filesystem::path& cut) {
+  SnapshotInfo infoA, infoB;
+  const ParticleSet a = readSnapshot((full / "snapshots" / "snap_0004.h5").string(), infoA);
+  const ParticleSet b = readSnapshot((cut / "snapshots" / "snap_0004.h5").string(), infoB);
+  ASSERT_EQ(infoA.step, infoB.step);
+  ASSERT_EQ(infoA.time, infoB.time);
+  ASSERT_EQ(a.numReal, b.numReal);
+  for (std::size_t i = 0; i < a.numReal; ++i) {
+    for (int d = 0; d < 3; ++d) {
+      ASSERT_EQ(a.x[d][i], b.x[d][i]) << "particle " << i;
+      ASSERT_EQ(a.v[d][i], b.v[d][i]) << "particle " << i;
+    }
+    ASSERT_EQ(a.u[i], b.u[i]) << "particle " << i;
+    ASSERT_EQ(a.rho[i], b.rho[i]) << "particle " << i;
+    ASSERT_EQ(a.h[i], b.h[i]) << "particle " << i;
+  }
 }
 
 }  // namespace ejecta::test

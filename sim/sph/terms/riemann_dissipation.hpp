@@ -57,7 +57,8 @@ struct PressureChange {
 };
 inline PressureChange pressureChangeAndSlope(const RiemannSide& K, double w) {
   if (w <= 0.0) return {K.rho * K.c * w, K.rho * K.c, 0.0};
-  const double aw = kShockSlope * w, root = std::sqrt(aw * aw + K.c * K.c), q = aw / root;
+  const double aw = kShockSlope * w, root = std::sqrt(aw * aw + K.c * K.c);
+  const double q = root > 0.0 ? aw / root : 1.0;  // 1: the strong limit (a cold gas, aw^2 -> 0)
   return {K.rho * w * (aw + root), K.rho * (2.0 * aw + root + aw * q),
           K.rho * kShockSlope * (2.0 + 3.0 * q - q * q * q)};
 }

@@ -158,24 +158,14 @@ TEST(IndividualSteps, RestartAtASnapshotMatchesAnUninterruptedRunBitForBit) {
   fs::remove_all(cut);
   test::runAndResumeFromSnapshot2(source, full, cut);
   ASSERT_FALSE(::testing::Test::HasFatalFailure());
+  test::expectLastSnapshotsMatch(full, cut);
   SnapshotInfo infoA, infoB;
   const ParticleSet a = readSnapshot((full / "snapshots" / "snap_0004.h5").string(), infoA);
   const ParticleSet b = readSnapshot((cut / "snapshots" / "snap_0004.h5").string(), infoB);
-  ASSERT_EQ(infoA.step, infoB.step);
-  ASSERT_EQ(infoA.time, infoB.time);
-  ASSERT_EQ(a.numReal, b.numReal);
   const Field* binA = a.field(TimeBins::kBinField);
   ASSERT_NE(binA, nullptr) << "snapshots hold each particle's time bin";
-  for (std::size_t i = 0; i < a.numReal; ++i) {
-    for (int d = 0; d < 3; ++d) {
-      ASSERT_EQ(a.x[d][i], b.x[d][i]) << "particle " << i;
-      ASSERT_EQ(a.v[d][i], b.v[d][i]) << "particle " << i;
-    }
-    ASSERT_EQ(a.u[i], b.u[i]);
-    ASSERT_EQ(a.rho[i], b.rho[i]);
-    ASSERT_EQ(a.h[i], b.h[i]);
+  for (std::size_t i = 0; i < a.numReal; ++i)
     ASSERT_EQ(a.column(*binA, 0)[i], b.column(*b.field(TimeBins::kBinField), 0)[i]);
-  }
 }
 
 std::string sceneError(const std::string& override) {

@@ -75,22 +75,7 @@ TEST(Simulation, RestartMatchesAnUninterruptedRunBitForBit) {
   // Interrupt the second run at its snapshot 2 (t = 0.01 of 0.02): remove the later ones, resume.
   test::runAndResumeFromSnapshot2(kBlastScene, full, cut);
   ASSERT_FALSE(::testing::Test::HasFatalFailure());
-
-  SnapshotInfo infoA, infoB;
-  const ParticleSet a = readSnapshot((full / "snapshots" / "snap_0004.h5").string(), infoA);
-  const ParticleSet b = readSnapshot((cut / "snapshots" / "snap_0004.h5").string(), infoB);
-  ASSERT_EQ(infoA.step, infoB.step);
-  ASSERT_EQ(infoA.time, infoB.time);
-  ASSERT_EQ(a.numReal, b.numReal);
-  for (std::size_t i = 0; i < a.numReal; ++i) {
-    for (int d = 0; d < 3; ++d) {
-      ASSERT_EQ(a.x[d][i], b.x[d][i]) << "particle " << i;
-      ASSERT_EQ(a.v[d][i], b.v[d][i]) << "particle " << i;
-    }
-    ASSERT_EQ(a.u[i], b.u[i]);
-    ASSERT_EQ(a.rho[i], b.rho[i]);
-    ASSERT_EQ(a.h[i], b.h[i]);
-  }
+  test::expectLastSnapshotsMatch(full, cut);
   EXPECT_TRUE(fs::exists(cut / "summary.json"));
   EXPECT_TRUE(fs::exists(cut / "snapshots.xdmf"));
   // The energy ledger has a header and one line per step (step 0 included), also after the
@@ -101,8 +86,10 @@ TEST(Simulation, RestartMatchesAnUninterruptedRunBitForBit) {
     for (std::string line; std::getline(log, line);) ++lines;
     return lines;
   };
-  EXPECT_EQ(countLines(full / "energy.csv"), infoA.step + 2);
-  EXPECT_EQ(countLines(cut / "energy.csv"), infoA.step + 2);
+  SnapshotInfo last;
+  readSnapshot((full / "snapshots" / "snap_0004.h5").string(), last);
+  EXPECT_EQ(countLines(full / "energy.csv"), last.step + 2);
+  EXPECT_EQ(countLines(cut / "energy.csv"), last.step + 2);
 }
 
 TEST(Simulation, NonFiniteStateStopsWithADiagnosis) {

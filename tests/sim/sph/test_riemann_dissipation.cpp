@@ -8,12 +8,14 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "sim/exact/riemann.hpp"
 #include "sim/sph/terms/riemann_dissipation.hpp"
 #include "support/fluid_option_checks.hpp"
+#include "support/periodic_blast.hpp"
 #include "support/quarter_blast.hpp"
 
 namespace ejecta {
@@ -201,9 +203,10 @@ TEST(RiemannDissipation, QuarterDomainWithMirrorWallsMatchesTheFullBox) {
   EXPECT_LT(m.pressure, 1e-10);
 }
 
-// On time bins (individual steps), with the reconstruction (set by the scene) and without (the
-// default there): bit for bit on 1 and 2 threads, and the periodic blast's energy to the global
-// blast's 1e-3 (measured -5.2e-5 without the reconstruction, -1.7e-4 with it).
+// On time bins (individual steps), with the reconstruction (the default) and without: bit for bit
+// on 1 and 2 threads, and the periodic blast's energy to 1e-4 (measured -5.2e-5 without the
+// reconstruction, -4.6e-5 with it; with the inactive partners' gradients as last evaluated
+// instead of re-evaluated, sim/sph/velocity_gradient_refresh.hpp, -1.7e-4).
 TEST(RiemannDissipation, RunsOnTimeBins) {
   for (const char* reconstruction : {"none", "monotone"}) {
     const std::vector<std::string> option = {
@@ -215,8 +218,26 @@ TEST(RiemannDissipation, RunsOnTimeBins) {
     ASSERT_TRUE(r.ok) << r.error;
     std::printf("  periodic blast on bins, reconstruction %s: energy error %.2e\n", reconstruction,
                 r.summary.energy.relativeError);
-    EXPECT_LT(std::abs(r.summary.energy.relativeError), 1e-3);
+    EXPECT_LT(std::abs(r.summary.energy.relativeError), 1e-4);
   }
+}
+
+// A run on time bins with the reconstruction resumed from a snapshot halfway is the uninterrupted
+// run to the last bit: the inactive partners' re-evaluated gradients are never stored (at a
+// snapshot every particle is synchronised and evaluated by the density pass itself).
+TEST(RiemannDissipation, RestartOnTimeBinsMatchesAnUninterruptedRunBitForBit) {
+  const std::filesystem::path base =
+      std::filesystem::temp_directory_path() / "ejecta_test_riemann_bins_restart";
+  std::filesystem::remove_all(base);
+  const std::string source = test::periodicBlastScene(
+      "[sph]\ndissipation = \"riemann\"\n[sph.viscosity]\nreconstruction = \"monotone\"\n");
+  std::string binned = source;
+  const std::string key = "[time]\n";
+  binned.replace(binned.find(key), key.size(), key + "stepping = \"individual\"\n");
+  test::runAndResumeFromSnapshot2(binned, base / "full", base / "cut");
+  ASSERT_FALSE(::testing::Test::HasFatalFailure());
+  test::expectLastSnapshotsMatch(base / "full", base / "cut");
+  std::filesystem::remove_all(base);
 }
 
 // --- RZ: the ring form of the pair volumes -----------------------------------------------------
@@ -335,16 +356,10 @@ TEST(RiemannDissipation, RefusedWhereItIsNotBuilt) {
   EXPECT_EQ(parseScene(optionGasScene(kOn, "rz"), "gsph.toml").sph.dissipation,
             Dissipation::Riemann);  // RZ is built (the ring form above)
   test::expectRefusedWhereNoOptionIsBuilt(kOn, key);
-  // With individual steps it does not reconstruct unless the scene says so
-  // (VerifyIndividualSteps.RiemannSedov2DMatchesGlobalSteps has why).
+  // With individual steps too (the inactive partners' gradients are re-evaluated).
   const Scene binned =
       parseScene(optionGasScene(kOn, "2d", "", "stepping = \"individual\"\n"), "gsph.toml");
-  EXPECT_EQ(binned.sph.viscosityReconstruction, ViscosityReconstruction::None);
-  EXPECT_EQ(parseScene(optionGasScene(kOn, "2d", "[sph.viscosity]\nreconstruction = \"monotone\"\n",
-                                      "stepping = \"individual\"\n"),
-                       "gsph.toml")
-                .sph.viscosityReconstruction,
-            ViscosityReconstruction::Monotone);
+  EXPECT_EQ(binned.sph.viscosityReconstruction, ViscosityReconstruction::Monotone);
   expectReaderRefuses(optionGasScene("dissipation = \"godunov\"", "2d"), key, "riemann");
 }
 

@@ -221,17 +221,11 @@ TEST(ViscositySwitch, RestartMatchesAnUninterruptedRunBitForBit) {
   ASSERT_TRUE(mid.hasViscositySwitch());
   EXPECT_GT(*std::max_element(mid.alpha.begin(), mid.alpha.end()), 0.12);  // measured 0.157
 
+  test::expectLastSnapshotsMatch(full, cut);
   SnapshotInfo infoA, infoB;
   const ParticleSet a = readSnapshot((full / "snapshots" / "snap_0004.h5").string(), infoA);
   const ParticleSet b = readSnapshot((cut / "snapshots" / "snap_0004.h5").string(), infoB);
-  ASSERT_EQ(infoA.step, infoB.step);
-  ASSERT_EQ(a.numReal, b.numReal);
   for (std::size_t i = 0; i < a.numReal; ++i) {
-    for (int d = 0; d < 2; ++d) {
-      ASSERT_EQ(a.x[d][i], b.x[d][i]) << "particle " << i;
-      ASSERT_EQ(a.v[d][i], b.v[d][i]) << "particle " << i;
-    }
-    ASSERT_EQ(a.u[i], b.u[i]);
     ASSERT_EQ(a.alpha[i], b.alpha[i]);
     ASSERT_EQ(a.dalpha_dt[i], b.dalpha_dt[i]);
   }
