@@ -167,4 +167,9 @@ const double* distentionColumn(const ParticleSet& p) {
   return f ? p.column(*f, 0).data() : nullptr;
 }
 
+const double* compactionFactorColumn(const ParticleSet& p) {
+  const Field* f = p.field(kCompactionFactorField);
+  return f ? p.column(*f, 0).data() : nullptr;
+}
+
 }  // namespace ejecta

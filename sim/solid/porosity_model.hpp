@@ -17,6 +17,14 @@ inline constexpr const char* kDistentionField = "distention";
 // porous particle is its matrix's over alpha (docs/porosity.md, "Strength of porous material").
 const double* distentionColumn(const ParticleSet& p);
 
+// The compaction factor f of a porous solid (Jutzi, Benz & Michel 2008): the matrix's share of
+// the bulk's volumetric strain, f = dln(rho_s)/dln(rho) = 1 + dln(alpha)/dln(rho), in [0, 1],
+// which the matrix's deviatoric strain takes too (docs/porosity.md, "Strength of porous
+// material"). The porosity package declares it where a porous material has strength.
+inline constexpr const char* kCompactionFactorField = "compaction_factor";
+// Its column, or nullptr (no porous solid: f = 1).
+const double* compactionFactorColumn(const ParticleSet& p);
+
 class PorosityModel {
  public:
   virtual ~PorosityModel() = default;

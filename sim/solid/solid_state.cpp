@@ -80,11 +80,16 @@ FlawSet distributeMaterialFlaws(const ParticleSet& initial, const MaterialTable&
   for (std::size_t m = 0; m < materials.size(); ++m) {
     const FractureModel& f = materials[m].fracture;
     if (f.kind != FractureKind::GradyKipp) continue;
-    // Particles in id order, so the draw does not depend on how the set was sorted.
+    // Particles in id order, so the draw does not depend on how the set was sorted. The flaws
+    // are the matrix's, on its volume m/rho_s = m/(alpha_0 rho) where the material is porous
+    // (Jutzi, Benz & Michel 2008, as Spheral's Benz-Asphaug seeding reads it: the porosity's
+    // solid density): a porous body has fewer, so its weakest flaw is stronger by alpha_0^(1/m).
+    const PorosityModel* porosity = materials[m].porosity.get();
+    const double alpha0 = porosity ? porosity->initialDistention() : 1.0;
     std::vector<std::pair<std::int64_t, double>> members;
     for (std::size_t i = 0; i < initial.numReal; ++i)
       if (initial.material[i] == static_cast<int>(m))
-        members.emplace_back(initial.id[i], initial.mass[i] / initial.rho[i]);
+        members.emplace_back(initial.id[i], initial.mass[i] / (alpha0 * initial.rho[i]));
     if (members.empty()) continue;
     std::sort(members.begin(), members.end());
     std::vector<double> volumes(members.size());

@@ -140,6 +140,11 @@ double EpsilonAlphaModel::distention(double eps, double epsMin) const {
   return elasticDistention(loadingDistention(reached), eps - reached);
 }
 
+double EpsilonAlphaModel::signedDistentionRate(double eps, double epsMin, double epsRate) const {
+  const bool loading = epsRate < 0.0 && eps <= epsMin;
+  return (loading ? loadingSlope(eps) : elasticSlope(distention(eps, epsMin))) * epsRate;
+}
+
 double EpsilonAlphaModel::distentionRate(double eps, double epsMin, double epsRate) const {
   const bool loading = epsRate < 0.0 && eps <= epsMin;
   if (!loading) return std::abs(elasticSlope(distention(eps, epsMin)) * epsRate);

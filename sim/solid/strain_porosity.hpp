@@ -76,6 +76,10 @@ class EpsilonAlphaModel final : public PorosityModel {
   }
   // The strain of a state reached from rest (bulk density rho_0, u = 0): ln(rho_0/rho) - ... u.
   double strainOf(double rho, double u) const;
+  // dalpha/dt at strain eps with history eps_min for a strain rate epsRate: along the loading
+  // curve where the strain compresses at the most compressive strain reached, by the elastic
+  // law otherwise.
+  double signedDistentionRate(double eps, double epsMin, double epsRate) const;
 
   // The loading curve alpha(eps) and its slope, for a first compression.
   double loadingDistention(double eps) const;

@@ -222,8 +222,10 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
     throw std::logic_error("riemann dissipation: a velocity gradient for every particle");
   if constexpr (!Solid) fillPressureTerms<RZ, Form, Godunov>(p, pressureTerm, here);
   const bool artificial = Solid && artificialStress->enabled();
-  // A porous particle's shear modulus is its matrix's over its distention.
+  // A porous particle's shear modulus is its matrix's over its distention, times the matrix's
+  // share f of the strain (sim/solid/porosity_model.hpp).
   const double* distention = Solid ? distentionColumn(p) : nullptr;
+  const double* compaction = Solid ? compactionFactorColumn(p) : nullptr;
 
   // Sums particles list[begin, end) (not Listed: begin to end themselves) over their pairs, each
   // into its own derivatives alone. Dynamic chunks balance uneven pair counts. (The loop holds
@@ -396,7 +398,8 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
         dudt += power;
         divergence = L[0][0] + L[1][1] + L[2][2];
         const double G = ws.shearModulus[p.material[i]];
-        storeStressRate(p, i, L, distention ? G / distention[i] : G);
+        storeStressRate(p, i, L, distention ? G / distention[i] : G,
+                        compaction ? compaction[i] : 1.0);
       } else {
         // P_i/rho_i sum_j w_ij v_ij . grad W = -(P_i/rho_i) (div v)_i
         divergence = -dudtDivergence + hoopRate;

@@ -13,6 +13,12 @@
 //   shared distention field is kicked with rate 0 for these particles (the integrator may set it
 //   back to its step-start value); the equation of state that follows every kick recomputes it
 //   before anything reads it.
+// A porous solid (a porous material with strength): its deviatoric stress S is the bulk's, the
+// matrix's over alpha, so its rate gains -S (dalpha/dt)/alpha (and the P-alpha return scales S
+// by alpha/alpha_returned); at the end of each step its compaction factor f, the matrix's share
+// of the step's volumetric strain, 1 + dln(alpha)/dln(rho), is kept for the force pass to scale
+// the next step's elastic stress rate by: the matrix's stress alpha S then follows the matrix's
+// strain alone (docs/porosity.md, "The matrix's share of the strain").
 #include <cstddef>
 #include <vector>
 
@@ -32,6 +38,10 @@ class PorosityPackage : public PhysicsPackage {
   static constexpr const char* kStrain = "volumetric_strain";
   static constexpr const char* kStrainRate = "volumetric_strain_rate";
   static constexpr const char* kLeastStrain = "compaction_strain";
+  // A porous solid's distention and bulk density at the start of its step (the step's strains
+  // give its compaction factor).
+  static constexpr const char* kStartDistention = "distention_at_step_start";
+  static constexpr const char* kStartDensity = "density_at_step_start";
 
   PorosityPackage(const MaterialTable& materials, DensityMethod density);
 
@@ -53,6 +63,15 @@ class PorosityPackage : public PhysicsPackage {
     const double* strainRate = nullptr;
   };
   StepColumns stepColumns(const ParticleSet& p) const;
+  // A porous solid's columns: the compaction factor f and the state its step started from.
+  struct MatrixShare {
+    double* factor = nullptr;
+    double* startDistention = nullptr;
+    double* startDensity = nullptr;
+  };
+  MatrixShare matrixShare(ParticleSet& p) const;
+  // At the end of particle i's step (distention alpha): f for its next step.
+  void followMatrix(ParticleSet& p, const MatrixShare& share, std::size_t i, double alpha) const;
   double particleTimestep(const ParticleSet& p, const PackageContext& c, const StepColumns& columns,
                           std::size_t i) const;
 
@@ -63,6 +82,8 @@ class PorosityPackage : public PhysicsPackage {
   bool anyEpsilonAlpha_ = false;
   std::vector<double> initialDistention_;  // alpha_0 by material (1: not porous)
   double largestInitialDistention_ = 1.0;
+  std::vector<char> porousSolid_;  // by material: porous and with strength
+  bool anyPorousSolid_ = false;
   // Scratch of updateState: each porous material's selected particles and their matrix state.
   std::vector<std::size_t> members_;
   std::vector<double> matrixDensity_, matrixPressure_, matrixSoundSpeed_;

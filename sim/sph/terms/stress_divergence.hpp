@@ -69,13 +69,16 @@ struct StressDivergence {
 
 // The Jaumann rate of the deviatoric stress and the equivalent strain rate of particle i from its
 // velocity gradient L (the one the energy equation used, so stress work and heating agree).
-// A particle without strength (shear modulus 0) holds no deviatoric stress.
-inline void storeStressRate(ParticleSet& p, std::size_t i, const Mat3& L, double shearModulus) {
+// A particle without strength (shear modulus 0) holds no deviatoric stress. `matrixShare`: the
+// share of the strain its elastic part takes (a porous solid's compaction factor; its stress
+// still rotates with the material).
+inline void storeStressRate(ParticleSet& p, std::size_t i, const Mat3& L, double shearModulus,
+                            double matrixShare = 1.0) {
   const int nc = p.stressComponents();
   if (shearModulus > 0.0) {
     SymTensor S;
     for (int c = 0; c < nc; ++c) S[c] = p.stress[c][i];
-    const SymTensor rate = jaumannStressRate(L, S, shearModulus);
+    const SymTensor rate = jaumannStressRate(L, S, shearModulus * matrixShare);
     for (int c = 0; c < nc; ++c) p.dstress_dt[c][i] = rate[c];
     p.strainRate[i] = equivalentStrainRate(L);
   } else {

@@ -23,6 +23,7 @@
 #include "sim/solid/strength_models/von_mises.hpp"
 #include "sim/state/tensor.hpp"
 #include "sim/solid/thermal.hpp"
+#include "sim/sph/terms/stress_divergence.hpp"
 #include "support/material_scene_error.hpp"
 
 namespace fs = std::filesystem;
@@ -79,6 +80,36 @@ TEST(Strength, HookeRateOfUniaxialStrainAndJaumannRotation) {
   EXPECT_NEAR(rot[kXY], w * 2e8, 1e-6);
   EXPECT_NEAR(rot[kXX], 0.0, 1e-6);
   EXPECT_NEAR(equivalentStrainRate(spin), 0.0, 1e-12);  // no deformation in a rotation
+}
+
+// A porous solid whose matrix takes none of the strain (compaction factor 0, pores crushing)
+// gains no elastic stress, but its stress still turns with the material and its strain rate is
+// the bulk's (for rate-dependent flow stresses): storeStressRate scales the elastic part alone.
+TEST(Strength, MatrixShareScalesTheElasticRateAlone) {
+  ParticleSet p;
+  p.resize(1);
+  p.numReal = 1;
+  p.enableStrength(4);
+  p.stress[kXX][0] = 1e8;
+  p.stress[kYY][0] = -1e8;
+  Mat3 L{};
+  L[0][0] = -1e3;  // compression along x
+  L[0][1] = -5.0;  // and a spin about z
+  L[1][0] = 5.0;
+  SymTensor S;
+  S[kXX] = 1e8;
+  S[kYY] = -1e8;
+  const double G = 30e9;
+  for (const double share : {0.0, 0.25, 1.0}) {
+    storeStressRate(p, 0, L, G, share);
+    const SymTensor expected = jaumannStressRate(L, S, share * G);
+    for (int c = 0; c < 4; ++c)
+      EXPECT_DOUBLE_EQ(p.dstress_dt[c][0], expected[c]) << share << " " << c;
+    EXPECT_DOUBLE_EQ(p.strainRate[0], equivalentStrainRate(L));
+  }
+  storeStressRate(p, 0, L, G, 0.0);
+  EXPECT_NEAR(p.dstress_dt[kXY][0], 5.0 * 2e8, 1e-6);  // the rotation of S, as at share 1
+  EXPECT_NEAR(p.dstress_dt[kXX][0], 0.0, 1e-6);         // no elastic part
 }
 
 TEST(Strength, RadialReturnScalesOntoTheYieldSurface) {
@@ -287,6 +318,31 @@ TEST(Fracture, CrackGrowthLimitsTheTimeStep) {
   ASSERT_GT(fastest * courantStep, limit) << "the Courant step alone would not need the limit";
   // The limit sets the step: dt = 0.3 / max ds/dt, to round-off.
   EXPECT_NEAR(sim.dtNext() * fastest, limit, 1e-12);
+}
+
+// The flaws of a porous material are its matrix's: drawn on the matrix's volume m/(alpha_0 rho),
+// so the body's weakest flaw activates at (1/(k V_s))^(1/m), alpha_0^(1/m) above a solid bar's
+// of the same bulk volume (Benz & Asphaug's sequence, sim/solid/weibull_flaws.hpp).
+TEST(Fracture, PorousFlawsAreDrawnOnTheMatrixVolume) {
+  const double alpha0 = 1.4, k = 4e26, m = 8.5;
+  auto weakest = [](const std::string& extra) {
+    const Scene scene = parseScene(std::string(kTensionBar) + extra, "tension_bar.toml");
+    const MaterialTable materials = MaterialTable::fromScene(scene);
+    const ParticleSet initial = buildParticles(scene, materials);
+    const FlawSet flaws = distributeMaterialFlaws(initial, materials);
+    double volume = 0.0, least = 1.0;
+    for (std::size_t i = 0; i < initial.numReal; ++i) volume += initial.mass[i] / initial.rho[i];
+    for (std::size_t r = 0; r < flaws.tables[0].numParticles(); ++r)
+      least = std::min(least, flaws.tables[0].thresholds(r).front());
+    return std::pair{volume, least};
+  };
+  const auto [solidVolume, solidWeakest] = weakest("");
+  const auto [porousVolume, porousWeakest] = weakest(
+      "[materials.porosity]\nmodel = \"p_alpha\"\ninitial_distention = 1.4\n"
+      "elastic_pressure = \"10 MPa\"\nsolid_pressure = \"1 GPa\"\n");
+  EXPECT_DOUBLE_EQ(porousVolume, solidVolume);  // the same bar at the same bulk density
+  EXPECT_NEAR(solidWeakest, std::pow(1.0 / (k * solidVolume), 1.0 / m), 1e-12 * solidWeakest);
+  EXPECT_NEAR(porousWeakest, std::pow(alpha0 / (k * porousVolume), 1.0 / m), 1e-12 * porousWeakest);
 }
 
 // One step of the tension bar, started at crack fraction 0.6 (D = 0.216), with the crack growth
