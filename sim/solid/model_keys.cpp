@@ -143,7 +143,7 @@ const ModelFamily& porosityModelFamily() {
         number("transition_exponent", "2", "n1 of the two-segment curve's first segment"),
         number("elastic_strain", "0",
                "epsilon_alpha: |εe|, the volumetric strain's magnitude where plastic compaction "
-               "begins (iSALE's EPSE is −εe)"),
+               "begins (iSALE's EPSE0, which its inputs give negative, is εe)"),
         number("kappa", "required", "epsilon_alpha: κ in (0, 1), the exponential's rate "
                "α = αe exp(κ (ε − εe))"),
         number("sound_speed_ratio", "1",
