@@ -109,6 +109,17 @@ TEST(MpiRuns, EpsilonAlphaCompaction) {
                                 {"bodies[0].spacing=\"0.2 mm\"", "time.t_end=\"4 us\""}));
 }
 
+// A porous solid (docs/porosity.md, "The matrix's share of the strain"): its compaction factor
+// and the state its step started from travel with it, with global steps and on time bins.
+TEST(MpiRuns, PorousSolidCompaction) {
+  for (const char* stepping : {"global", "individual"})
+    expectSameAsOneRank(sceneFile("verification/compaction_1d.toml",
+                                  {"bodies[0].spacing=\"0.2 mm\"", "time.t_end=\"4 us\"",
+                                   "materials[0].strength.model=\"elastic\"",
+                                   "materials[0].strength.shear_modulus=\"26 GPa\"",
+                                   std::string("time.stepping=\"") + stepping + "\""}));
+}
+
 // Individual time steps (docs/time_steps.md): each particle's bin, its step's ends and its
 // start values travel with it; the sub-steps end where the earliest step on any rank ends, and
 // a particle that begins a step wakes its neighbours on other ranks through their halos.
