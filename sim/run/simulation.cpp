@@ -7,23 +7,23 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <optional>
 #include <numeric>
+#include <optional>
 #include <sstream>
 
-#include "sim/setup/bodies.hpp"
-#include "sim/sph/density_pass.hpp"
-#include "sim/sph/velocity_gradient_refresh.hpp"
-#include "sim/sph/iad_matrix.hpp"
 #include "sim/run/packages/phase_fractions_package.hpp"
 #include "sim/run/packages/porosity_package.hpp"
-#include "sim/run/packages/smoothing_length_cap_package.hpp"
 #include "sim/run/packages/programmed_burn_package.hpp"
-#include "sim/run/timestep_criteria.hpp"
+#include "sim/run/packages/smoothing_length_cap_package.hpp"
 #include "sim/run/packages/strength_package.hpp"
 #include "sim/run/packages/viscosity_switch_package.hpp"
+#include "sim/run/timestep_criteria.hpp"
+#include "sim/setup/bodies.hpp"
 #include "sim/solid/solid_state.hpp"
+#include "sim/sph/density_pass.hpp"
 #include "sim/sph/hydro_force.hpp"
+#include "sim/sph/iad_matrix.hpp"
+#include "sim/sph/velocity_gradient_refresh.hpp"
 
 namespace ejecta {
 
