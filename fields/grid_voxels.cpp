@@ -98,7 +98,10 @@ GridVoxels readGridVoxels(const std::string& path, const GridVoxelOptions& optio
       if (name.rfind("fraction_", 0) != 0 || name.size() == 9) continue;
       const openvdb::FloatGrid::Ptr f = readFloat(file, path, name);
       out.materials.push_back(name.substr(9));
-      if (metaString(*f, "normalisation") != "none") out.fractionsArePlainSums = false;
+      // "capped" (what runs write: the plain sum, divided by S only where S > 1) is a filled
+      // fraction too; "shepard" is a share of what is present.
+      const std::string normalisation = metaString(*f, "normalisation");
+      if (normalisation != "none" && normalisation != "capped") out.fractionsArePlainSums = false;
       LatticeLookup lookup(*f, *grid);
       std::vector<double> values(kept.size());
       for (std::size_t i = 0; i < kept.size(); ++i) values[i] = lookup(kept[i]);

@@ -33,9 +33,10 @@ struct GridVoxels {
   // the fraction grids in file order; empty when not asked for or the file has none.
   std::vector<std::string> materials;
   std::vector<std::vector<double>> fraction;
-  // True when every fraction grid is a plain SPH sum (normalisation "none"): they then sum to
-  // the filled fraction S (1 inside material, 0.5 on its surface). Shepard-normalised fractions
-  // sum to 1 wherever anything is, and say only how the material is mixed.
+  // True when every fraction grid is a plain SPH sum (normalisation "none", or "capped": divided
+  // by S only where S > 1, as runs write them): they then sum to the filled fraction S (1 inside
+  // material, 0.5 on its surface). Shepard-normalised fractions sum to 1 wherever anything is,
+  // and say only how the material is mixed.
   bool fractionsArePlainSums = false;
 
   std::size_t size() const { return x.size(); }

@@ -135,6 +135,26 @@ TEST(ChainThermal, InSituPassesMatchTheCommandAndThePhysics) {
     for (const char* png : {"flux.png", "wall_side0.png", "sizing.png"})
       EXPECT_TRUE(fs::exists(again / png)) << again / png;
   }
+
+  // The same output's grid file as voxel emitters: a run's fraction grids (written "capped")
+  // give each hot voxel its filled fraction, so the voxels hold about the hot particles' volume
+  // (the kernel's partition of unity). Counted as full voxels they held 4.5 times it on
+  // impact_rz, and the flux doubled (docs/thermal.md).
+  const fs::path voxels = dir / "voxels";
+  ASSERT_EQ(runCommand(kEjecta + " thermal " + (dir / "small_follower.toml").string() + " --from " +
+                    (dir / "run" / "snapshots" / "snap_0002.h5").string() + " --emitters voxels --no-charts --out " +
+                    voxels.string(),
+                output),
+            0)
+      << output;
+  const Json fromVoxels = Json::parse(readTextFile(voxels / "thermal.json"));
+  EXPECT_EQ(fromVoxels["grid_file"]["fill_weighted"], true) << fromVoxels["grid_file"];
+  const double particleVolume = fromFile["emitter_volume_m3"], voxelVolume = fromVoxels["emitter_volume_m3"];
+  ASSERT_GT(particleVolume, 0.0);
+  // Measured 1.09 here; hot voxels reach up to a smoothing length beyond the hot
+  // particles (the kernel's support), with their share of the neighbours' volume: within 2x.
+  EXPECT_GT(voxelVolume, 0.5 * particleVolume);
+  EXPECT_LT(voxelVolume, 2.0 * particleVolume);
   fs::remove_all(dir);
 }
 

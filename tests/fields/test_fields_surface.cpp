@@ -203,8 +203,11 @@ std::string writeKnownGrid(const std::string& file, double voxel, bool shepardIr
   GridSet set;
   set.lattice = cube(voxel, 16, 4);
   // channel 0: the filled fraction (any positive value marks a voxel active); 1: temperature as
-  // a plain sum (stored as it is); 2, 3: the fractions.
-  set.grids = {{"temperature", "K", 1, false}, {"fraction_rock", "1", 2, false}, {"fraction_iron", "1", 3, shepardIron}};
+  // a plain sum (stored as it is); 2, 3: the fractions, rock's tagged as runs write fractions
+  // ("capped": divided by S only where S > 1; here S = 1), iron's a plain sum or Shepard's.
+  set.grids = {{"temperature", "K", 1, false},
+               {"fraction_rock", "1", 2, false, true},
+               {"fraction_iron", "1", 3, shepardIron}};
   set.source = Geometry::Axisymmetric;
   forEachVoxel(set.lattice, [&](std::size_t b, int v, int i, int j, int k) {
     if (!KnownGrid::filled(i, j, k)) return;
@@ -243,7 +246,7 @@ TEST_F(SurfaceFiles, HotVoxelsOfAKnownGrid) {
   EXPECT_DOUBLE_EQ(v.time, 2.5e-3);
   ASSERT_EQ(v.materials.size(), 2u);
   ASSERT_EQ(v.fraction.size(), 2u);
-  EXPECT_TRUE(v.fractionsArePlainSums);
+  EXPECT_TRUE(v.fractionsArePlainSums);  // "capped" and "none" are both filled fractions
   const auto rock = std::find(v.materials.begin(), v.materials.end(), "rock") - v.materials.begin();
   const auto iron = std::find(v.materials.begin(), v.materials.end(), "iron") - v.materials.begin();
   ASSERT_LT(rock, 2);
