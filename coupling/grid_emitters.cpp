@@ -30,7 +30,7 @@ radiation::Emitters emittersFromGridFile(const std::string& path, const GridEmit
   source.temperature = v.value;
   source.voxelVolume = v.voxelVolume;
   for (const std::vector<double>& f : v.fraction) source.fraction.emplace_back(f);
-  source.fractionsAreFill = v.fractionsArePlainSums;
+  source.fractionsAreFill = v.fractionsAreFill;
 
   radiation::EmitterSelection selection;
   selection.minTemperature = options.minTemperature;
@@ -58,7 +58,7 @@ radiation::Emitters emittersFromGridFile(const std::string& path, const GridEmit
     s.time = v.time;
     s.sourceGeometry = v.sourceGeometry;
     s.materials = v.materials;
-    s.fillWeighted = v.fractionsArePlainSums;
+    s.fillWeighted = v.fractionsAreFill;
     *stats = s;
   }
   return e;

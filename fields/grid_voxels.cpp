@@ -93,7 +93,7 @@ GridVoxels readGridVoxels(const std::string& path, const GridVoxelOptions& optio
   }
 
   if (options.fractions) {
-    out.fractionsArePlainSums = true;
+    out.fractionsAreFill = true;
     for (const std::string& name : names) {
       if (name.rfind("fraction_", 0) != 0 || name.size() == 9) continue;
       const openvdb::FloatGrid::Ptr f = readFloat(file, path, name);
@@ -101,13 +101,13 @@ GridVoxels readGridVoxels(const std::string& path, const GridVoxelOptions& optio
       // "capped" (what runs write: the plain sum, divided by S only where S > 1) is a filled
       // fraction too; "shepard" is a share of what is present.
       const std::string normalisation = metaString(*f, "normalisation");
-      if (normalisation != "none" && normalisation != "capped") out.fractionsArePlainSums = false;
+      if (normalisation != "none" && normalisation != "capped") out.fractionsAreFill = false;
       LatticeLookup lookup(*f, *grid);
       std::vector<double> values(kept.size());
       for (std::size_t i = 0; i < kept.size(); ++i) values[i] = lookup(kept[i]);
       out.fraction.push_back(std::move(values));
     }
-    if (out.materials.empty()) out.fractionsArePlainSums = false;
+    if (out.materials.empty()) out.fractionsAreFill = false;
   }
   file.close();
   return out;

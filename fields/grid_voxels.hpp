@@ -37,7 +37,7 @@ struct GridVoxels {
   // by S only where S > 1, as runs write them): they then sum to the filled fraction S (1 inside
   // material, 0.5 on its surface). Shepard-normalised fractions sum to 1 wherever anything is,
   // and say only how the material is mixed.
-  bool fractionsArePlainSums = false;
+  bool fractionsAreFill = false;
 
   std::size_t size() const { return x.size(); }
 };

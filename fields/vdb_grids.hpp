@@ -37,7 +37,7 @@ struct StoredGrid {
   long step = 0;
   std::string scene;
   std::string sourceGeometry;  // "3d", "rz", "2d"
-  std::string normalisation;   // "shepard", "none", or "" for the level set
+  std::string normalisation;   // "shepard", "none", "capped" (fractions), or "" for the level set
 };
 
 // Reads every grid's metadata and value range. Throws std::runtime_error naming the file.

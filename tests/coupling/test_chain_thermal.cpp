@@ -138,8 +138,8 @@ TEST(ChainThermal, InSituPassesMatchTheCommandAndThePhysics) {
 
   // The same output's grid file as voxel emitters: a run's fraction grids (written "capped")
   // give each hot voxel its filled fraction, so the voxels hold about the hot particles' volume
-  // (the kernel's partition of unity). Counted as full voxels they held 4.5 times it on
-  // impact_rz, and the flux doubled (docs/thermal.md).
+  // (each particle's kernel integrates to 1: the integral of S over space is sum_j V_j). Counted
+  // as full voxels they held 4.5 times it on impact_rz, and the flux doubled (docs/thermal.md).
   const fs::path voxels = dir / "voxels";
   ASSERT_EQ(runCommand(kEjecta + " thermal " + (dir / "small_follower.toml").string() + " --from " +
                     (dir / "run" / "snapshots" / "snap_0002.h5").string() + " --emitters voxels --no-charts --out " +

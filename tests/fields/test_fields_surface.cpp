@@ -191,7 +191,7 @@ TEST_F(SurfaceFiles, InsetAndAdaptiveMeshes) {
 }
 
 // A known grid: temperature T = 1400 + 10 i + j [K] (integers: exact in float) at voxel
-// (i, j, k); two plain fraction grids f_rock = 0.25 + 0.01 (k + 16), f_iron = 0.125. Material
+// (i, j, k); two fraction grids (filled fractions) f_rock = 0.25 + 0.01 (k + 16), f_iron = 0.125. Material
 // everywhere in the lattice except where i + j + k is a multiple of 7 (holes: inactive voxels).
 struct KnownGrid {
   static double temperature(int i, int j, int /*k*/) { return 1400.0 + 10.0 * i + j; }
@@ -246,7 +246,7 @@ TEST_F(SurfaceFiles, HotVoxelsOfAKnownGrid) {
   EXPECT_DOUBLE_EQ(v.time, 2.5e-3);
   ASSERT_EQ(v.materials.size(), 2u);
   ASSERT_EQ(v.fraction.size(), 2u);
-  EXPECT_TRUE(v.fractionsArePlainSums);  // "capped" and "none" are both filled fractions
+  EXPECT_TRUE(v.fractionsAreFill);  // "capped" and "none" are both filled fractions
   const auto rock = std::find(v.materials.begin(), v.materials.end(), "rock") - v.materials.begin();
   const auto iron = std::find(v.materials.begin(), v.materials.end(), "iron") - v.materials.begin();
   ASSERT_LT(rock, 2);
@@ -275,12 +275,12 @@ TEST_F(SurfaceFiles, HotVoxelsOfAKnownGrid) {
   const GridVoxels fewer = readGridVoxels(file, o);
   EXPECT_LT(fewer.size(), v.size());
   EXPECT_TRUE(fewer.materials.empty());
-  EXPECT_FALSE(fewer.fractionsArePlainSums);
+  EXPECT_FALSE(fewer.fractionsAreFill);
   for (double t : fewer.value) EXPECT_GE(t, 1550.0);
 
   // A Shepard-normalised fraction grid makes the fractions shares, not filled fractions.
   const GridVoxels shares = readGridVoxels(writeKnownGrid(path("shares.vdb"), a, true));
-  EXPECT_FALSE(shares.fractionsArePlainSums);
+  EXPECT_FALSE(shares.fractionsAreFill);
 
   // Errors name the file and the grid.
   GridVoxelOptions missing;
