@@ -191,8 +191,9 @@ TEST_F(SurfaceFiles, InsetAndAdaptiveMeshes) {
 }
 
 // A known grid: temperature T = 1400 + 10 i + j [K] (integers: exact in float) at voxel
-// (i, j, k); two fraction grids (filled fractions) f_rock = 0.25 + 0.01 (k + 16), f_iron = 0.125. Material
-// everywhere in the lattice except where i + j + k is a multiple of 7 (holes: inactive voxels).
+// (i, j, k); two fraction grids (filled fractions) f_rock = 0.25 + 0.01 (k + 16),
+// f_iron = 0.125. Material everywhere in the lattice except where i + j + k is a multiple of 7
+// (holes: inactive voxels).
 struct KnownGrid {
   static double temperature(int i, int j, int /*k*/) { return 1400.0 + 10.0 * i + j; }
   static double rock(int, int, int k) { return 0.25 + 0.01 * (k + 16); }
