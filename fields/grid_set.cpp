@@ -129,6 +129,7 @@ GridSet buildGridSet(const ParticleSet& p, const ParticleContext& ctx, const Gri
   const std::vector<std::string> names = expandGridNames(request.grids, ctx.materialNames);
   GridSet set;
   set.source = ctx.geometry;
+  set.materials = ctx.materialNames;
   set.particles = ranks ? ranks->sum(p.numReal) : p.numReal;
 
   std::vector<std::vector<double>> values;

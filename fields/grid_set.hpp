@@ -52,6 +52,9 @@ struct GridSet {
   std::vector<GridSpec> grids;    // in request order
   Geometry source = Geometry::Spatial;
   std::size_t particles = 0;
+  // Every material of the run, whether or not its fraction grid is asked for: a reader of the
+  // file can then tell a voxel's fill from only some materials' fractions (grid_voxels.hpp).
+  std::vector<std::string> materials;
   // The value of grid g at block b, voxel v (0 where nothing is).
   float value(std::size_t g, std::size_t b, int v) const;
 };

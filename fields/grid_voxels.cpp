@@ -7,6 +7,7 @@
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Interpolation.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <mutex>
@@ -108,6 +109,17 @@ GridVoxels readGridVoxels(const std::string& path, const GridVoxelOptions& optio
       out.fraction.push_back(std::move(values));
     }
     if (out.materials.empty()) out.fractionsAreFill = false;
+    if (!out.materials.empty()) {
+      const openvdb::MetaMap::Ptr meta = file.getMetadata();
+      const auto count = meta->getMetadata<openvdb::Int64Metadata>("material_count");
+      for (openvdb::Int64 m = 0; count && m < count->value(); ++m) {
+        const auto name = meta->getMetadata<openvdb::StringMetadata>("material_" + std::to_string(m));
+        if (!name) throw std::runtime_error(path + ": material_count is " + std::to_string(count->value()) +
+                                            " but material_" + std::to_string(m) + " is missing");
+        if (std::find(out.materials.begin(), out.materials.end(), name->value()) == out.materials.end())
+          out.missingFractions.push_back(name->value());
+      }
+    }
   }
   file.close();
   return out;

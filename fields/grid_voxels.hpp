@@ -38,6 +38,10 @@ struct GridVoxels {
   // material, 0.5 on its surface). Shepard-normalised fractions sum to 1 wherever anything is,
   // and say only how the material is mixed.
   bool fractionsAreFill = false;
+  // The run's materials that have no fraction grid in a file that has some (from the file's
+  // material list; files written before it had one give none): their voxels would count as
+  // empty and voxels they share as part-filled.
+  std::vector<std::string> missingFractions;
 
   std::size_t size() const { return x.size(); }
 };

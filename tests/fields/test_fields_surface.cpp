@@ -200,8 +200,10 @@ struct KnownGrid {
   static bool filled(int i, int j, int k) { return ((i + j + k) % 7 + 7) % 7 != 0; }
 };
 
-std::string writeKnownGrid(const std::string& file, double voxel, bool shepardIron) {
+std::string writeKnownGrid(const std::string& file, double voxel, bool shepardIron,
+                           std::vector<std::string> runMaterials = {}) {
   GridSet set;
+  set.materials = std::move(runMaterials);  // none: a file written before the material list
   set.lattice = cube(voxel, 16, 4);
   // channel 0: the filled fraction (any positive value marks a voxel active); 1: temperature as
   // a plain sum (stored as it is); 2, 3: the fractions, rock's tagged as runs write fractions
@@ -248,6 +250,7 @@ TEST_F(SurfaceFiles, HotVoxelsOfAKnownGrid) {
   ASSERT_EQ(v.materials.size(), 2u);
   ASSERT_EQ(v.fraction.size(), 2u);
   EXPECT_TRUE(v.fractionsAreFill);  // "capped" and "none" are both filled fractions
+  EXPECT_TRUE(v.missingFractions.empty());  // a file without the run's material list
   const auto rock = std::find(v.materials.begin(), v.materials.end(), "rock") - v.materials.begin();
   const auto iron = std::find(v.materials.begin(), v.materials.end(), "iron") - v.materials.begin();
   ASSERT_LT(rock, 2);
@@ -297,6 +300,19 @@ TEST_F(SurfaceFiles, HotVoxelsOfAKnownGrid) {
   GridVoxelOptions nan;
   nan.threshold = std::nan("");
   EXPECT_THROW(readGridVoxels(file, nan), std::invalid_argument);
+}
+
+TEST_F(SurfaceFiles, MaterialsWithoutAFractionGridAreNamed) {
+  // The file lists the run's materials; a run that wrote the fractions of some (rock, iron) but
+  // not of another (ice) leaves ice's voxels looking empty: the reader names it.
+  const GridVoxels some = readGridVoxels(writeKnownGrid(path("some.vdb"), 0.2, false, {"rock", "ice", "iron"}));
+  EXPECT_EQ(some.missingFractions, std::vector<std::string>{"ice"});
+  const GridVoxels all = readGridVoxels(writeKnownGrid(path("all.vdb"), 0.2, false, {"iron", "rock"}));
+  EXPECT_TRUE(all.missingFractions.empty());
+  // Without the fractions asked for, nothing is missing (each voxel is then taken as full).
+  GridVoxelOptions bare;
+  bare.fractions = false;
+  EXPECT_TRUE(readGridVoxels(path("some.vdb"), bare).missingFractions.empty());
 }
 
 }  // namespace
