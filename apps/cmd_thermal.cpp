@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "apps/commands.hpp"
+#include "sim/setup/scene_catalog.hpp"
 #include "coupling/grid_emitters.hpp"
 #include "coupling/snapshot_emitters.hpp"
 #include "coupling/surface_occluder.hpp"
@@ -91,7 +92,10 @@ Inputs resolveInputs(const ThermalArgs& args) {
 }  // namespace
 
 int thermalCommand(const ThermalArgs& args) {
-  const radiation::ThermalStudy study = radiation::loadThermalStudy(args.scene);
+  // A file, or a shipped study's name ("thermal/follower", `ejecta scenes`), as `ejecta run` takes scenes.
+  const SceneText text = readSceneArgument(args.scene);
+  const radiation::ThermalStudy study =
+      radiation::parseThermalStudy(text.text, text.label, fs::path(args.scene).parent_path());
   if (args.from.empty())
     throw std::runtime_error(args.scene + ": no hot material: give --from RUN_DIR, SNAPSHOT.h5 or GRIDS.vdb");
   const Inputs in = resolveInputs(args);

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "apps/commands.hpp"
+#include "sim/setup/scene_catalog.hpp"
 #include "core/atomic_file.hpp"
 #include "radiation/geometry_file.hpp"
 #include "radiation/view_factor_convergence.hpp"
@@ -77,7 +78,10 @@ int convergenceCommand(const ViewfactorArgs& args, const radiation::GeometryConf
 }  // namespace
 
 int viewfactorCommand(const ViewfactorArgs& args) {
-  const radiation::GeometryConfig config = radiation::loadGeometryConfig(args.geometry);
+  // A file, or a shipped geometry's name ("geometry/seed_follower", `ejecta scenes`).
+  const SceneText text = readSceneArgument(args.geometry);
+  const radiation::GeometryConfig config =
+      radiation::parseGeometryConfig(text.text, text.label, fs::path(args.geometry).parent_path());
   if (!args.convergenceDir.empty()) return convergenceCommand(args, config);
   radiation::ViewFactorRunOptions run;
   if (args.rays > 0) run.rays = static_cast<std::uint64_t>(args.rays);

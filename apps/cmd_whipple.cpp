@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "apps/commands.hpp"
+#include "sim/setup/scene_catalog.hpp"
 #include "coupling/json_text.hpp"
 #include "core/atomic_file.hpp"
 #include "radiation/whipple_study.hpp"
@@ -45,7 +46,9 @@ std::string drawBleChart(const fs::path& csv, const fs::path& png, const radiati
 }  // namespace
 
 int whippleCommand(const WhippleArgs& args) {
-  const radiation::WhippleStudy study = radiation::loadWhippleStudy(args.shield);
+  // A file, or a shipped study's name ("whipple/haiv", `ejecta scenes`).
+  const SceneText text = readSceneArgument(args.shield);
+  const radiation::WhippleStudy study = radiation::parseWhippleStudy(text.text, text.label);
   const radiation::WhippleResult result = radiation::runWhippleStudy(study);
   const fs::path out = args.outDir.empty() ? fs::path("runs") / study.name : fs::path(args.outDir);
   fs::create_directories(out);

@@ -127,7 +127,7 @@ int main(int argc, char** argv) {
 
   ejecta::app::ViewfactorArgs vfArgs;
   CLI::App* vfCmd = app.add_subcommand("viewfactor", "View factors and incident flux by ray casting (docs/view_factors.md)");
-  vfCmd->add_option("geometry", vfArgs.geometry, "Geometry file (TOML)")->required();
+  vfCmd->add_option("geometry", vfArgs.geometry, "Geometry file (TOML), or a shipped geometry's name (ejecta scenes), e.g. geometry/seed_follower")->required();
   auto* raysOpt = vfCmd->add_option("--rays", vfArgs.rays, "Rays per receiving patch (fixed count)")
                       ->check(countInRange("--rays", 1LL << 32, "rays per patch; the error falls as rays^-1/2"));
   vfCmd->add_option("--tol", vfArgs.tolerance, "Absolute tolerance on view factors (adaptive ray count)")
@@ -143,7 +143,7 @@ int main(int argc, char** argv) {
 
   ejecta::app::ThermalArgs thermalArgs;
   CLI::App* thermalCmd = app.add_subcommand("thermal", "Flux on a spacecraft's faces from hot crater material, wall temperatures and shield sizing");
-  thermalCmd->add_option("scene", thermalArgs.scene, "Thermal study (TOML)")->required();
+  thermalCmd->add_option("scene", thermalArgs.scene, "Thermal study (TOML), or a shipped study's name (ejecta scenes), e.g. thermal/follower")->required();
   thermalCmd->add_option("--from", thermalArgs.from, "Run directory, snapshot (.h5) or grid file (.vdb) with the hot material");
   thermalCmd->add_option("--out,-o", thermalArgs.outDir, "Output directory");
   thermalCmd->add_flag("--json", thermalArgs.json, "Print thermal.json");
@@ -179,7 +179,7 @@ int main(int argc, char** argv) {
 
   ejecta::app::WhippleArgs whippleArgs;
   CLI::App* whippleCmd = app.add_subcommand("whipple", "Whipple-shield ballistic-limit curves and rear-wall sizing (docs/whipple.md)");
-  whippleCmd->add_option("shield", whippleArgs.shield, "Shield and threat (TOML)")->required();
+  whippleCmd->add_option("shield", whippleArgs.shield, "Shield and threat (TOML), or a shipped study's name (ejecta scenes), e.g. whipple/haiv")->required();
   whippleCmd->add_option("--out,-o", whippleArgs.outDir, "Output directory (default runs/<name>)");
   whippleCmd->add_flag("--json", whippleArgs.json, "Print whipple.json");
 

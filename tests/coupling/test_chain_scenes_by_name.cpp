@@ -1,7 +1,8 @@
 // The shipped scenes from the command line (apps/cmd_scenes.cpp, sim/setup/scene_catalog.hpp):
 // `ejecta scenes` lists every file with the command that takes it, `ejecta scenes show` prints
 // one byte for byte, `ejecta run NAME` runs a shipped scene from a directory that has no scenes/,
-// and a mistyped name is refused with exit status 1 and a pointer to the list.
+// and a mistyped name is refused with exit status 1 and a pointer to the list; the studies
+// (`ejecta whipple`, `ejecta viewfactor`, `ejecta thermal`) are taken by name as the list says.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -61,6 +62,30 @@ TEST(ScenesByName, RunTakesAShippedNameFromAnyDirectory) {
   EXPECT_EQ(runCommand(cd + kEjecta + " run sod_1e --quiet", out), 1) << out;
   EXPECT_NE(out.find("sod_1e: cannot open: no such file, and no shipped scene of that name"), std::string::npos) << out;
   EXPECT_NE(out.find("ejecta scenes"), std::string::npos) << out;
+  fs::remove_all(dir);
+}
+
+TEST(ScenesByName, StudiesAreTakenByNameAsTheListSays) {
+  const fs::path dir = fs::temp_directory_path() / ("ejecta_studies_by_name_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string cd = "cd " + dir.string() + " && ";
+  std::string byName, byFile;
+  // The same answer from the name as from the file (the seed's 3.2 mm wall: d_c = 4.43 mm at 10 km/s).
+  ASSERT_EQ(runCommand(cd + kEjecta + " whipple whipple/haiv --out w", byName), 0) << byName;
+  ASSERT_EQ(runCommand(cd + kEjecta + " whipple " + EJECTA_SOURCE_DIR + "/scenes/whipple/haiv.toml --out f", byFile), 0)
+      << byFile;
+  EXPECT_NE(byName.find("shipped scene 'whipple/haiv'"), std::string::npos) << byName;
+  EXPECT_EQ(readTextFile(dir / "w" / "ble.csv"), readTextFile(dir / "f" / "ble.csv"));
+  EXPECT_FALSE(readTextFile(dir / "w" / "ble.csv").empty());
+  ASSERT_EQ(runCommand(cd + kEjecta + " viewfactor geometry/howell_coaxial_discs --rays 4096", byName), 0) << byName;
+  EXPECT_NE(byName.find("F -> disc2"), std::string::npos) << byName;
+  // A thermal study by name gets as far as its hot material (none given here).
+  EXPECT_EQ(runCommand(cd + kEjecta + " thermal thermal/follower", byName), 1) << byName;
+  EXPECT_NE(byName.find("no hot material"), std::string::npos) << byName;
+  EXPECT_EQ(runCommand(cd + kEjecta + " thermal thermal/folower --from x", byName), 1) << byName;
+  EXPECT_NE(byName.find("thermal/folower: cannot open: no such file, and no shipped scene"), std::string::npos)
+      << byName;
   fs::remove_all(dir);
 }
 
