@@ -108,12 +108,12 @@ int fragmentsCommand(const FragmentsArgs& args) {
 
   std::optional<coupling::DebrisThreat> threat;
   if (!args.follower.empty()) {
-    const SceneText study = readSceneArgument(args.follower);
+    const SceneText study = readSceneArgument(args.follower, "thermal study");
     const radiation::ThermalStudy follower =
         radiation::parseThermalStudy(study.text, study.label, fs::path(args.follower).parent_path());
     std::optional<radiation::WhippleShield> shield;
     if (!args.shield.empty()) {
-      const SceneText text = readSceneArgument(args.shield);
+      const SceneText text = readSceneArgument(args.shield, "Whipple study");
       shield = radiation::parseWhippleStudy(text.text, text.label).shield;
     }
     threat = coupling::assessDebrisThreat(census, follower, shield);

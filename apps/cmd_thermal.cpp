@@ -93,7 +93,7 @@ Inputs resolveInputs(const ThermalArgs& args) {
 
 int thermalCommand(const ThermalArgs& args) {
   // A file, or a shipped study's name ("thermal/follower", `ejecta scenes`), as `ejecta run` takes scenes.
-  const SceneText text = readSceneArgument(args.scene);
+  const SceneText text = readSceneArgument(args.scene, "thermal study");
   const radiation::ThermalStudy study =
       radiation::parseThermalStudy(text.text, text.label, fs::path(args.scene).parent_path());
   if (args.from.empty())

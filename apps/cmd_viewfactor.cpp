@@ -79,7 +79,7 @@ int convergenceCommand(const ViewfactorArgs& args, const radiation::GeometryConf
 
 int viewfactorCommand(const ViewfactorArgs& args) {
   // A file, or a shipped geometry's name ("geometry/seed_follower", `ejecta scenes`).
-  const SceneText text = readSceneArgument(args.geometry);
+  const SceneText text = readSceneArgument(args.geometry, "geometry");
   const radiation::GeometryConfig config =
       radiation::parseGeometryConfig(text.text, text.label, fs::path(args.geometry).parent_path());
   if (!args.convergenceDir.empty()) return convergenceCommand(args, config);

@@ -47,7 +47,7 @@ std::string drawBleChart(const fs::path& csv, const fs::path& png, const radiati
 
 int whippleCommand(const WhippleArgs& args) {
   // A file, or a shipped study's name ("whipple/haiv", `ejecta scenes`).
-  const SceneText text = readSceneArgument(args.shield);
+  const SceneText text = readSceneArgument(args.shield, "Whipple study");
   const radiation::WhippleStudy study = radiation::parseWhippleStudy(text.text, text.label);
   const radiation::WhippleResult result = radiation::runWhippleStudy(study);
   const fs::path out = args.outDir.empty() ? fs::path("runs") / study.name : fs::path(args.outDir);

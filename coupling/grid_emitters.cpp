@@ -19,19 +19,20 @@ radiation::Emitters emittersFromGridFile(const std::string& path, const GridEmit
   read.grid = options.grid;
   read.threshold = options.minTemperature;
   const fields::GridVoxels v = fields::readGridVoxels(path, read);
+  if (v.sourceGeometry == "2d")
+    throw std::runtime_error(path + ": the grids of a planar-2D run are a slab with no 3D extent to "
+                             "radiate from; use an RZ or 3D run");
   if (!v.missingFractions.empty()) {
     std::string written, missing;
     for (const std::string& m : v.materials) written += (written.empty() ? "" : ", ") + m;
     for (const std::string& m : v.missingFractions) missing += (missing.empty() ? "" : ", ") + m;
     throw std::runtime_error(path + ": the file has the fraction grids of " + written + " but not of " + missing +
-                             " (the run's other materials): their hot voxels would be dropped and the voxels "
-                             "they share counted part-filled; write every material's fraction ([fields] grids = "
-                             "[\"temperature\", \"fractions\"]) or take the particles as emitters (--emitters "
-                             "particles)");
+                             " (the run's other materials): voxels of those alone would be dropped" +
+                             (v.fractionsAreFill ? ", and the voxels they share counted part-filled" : "") +
+                             "; write every material's fraction (the scene's [fields] grids = [\"temperature\", "
+                             "\"fractions\"], or ejecta fields SNAPSHOT --grids temperature,fractions), or take "
+                             "the particles as emitters (--from the run or its snapshot, --emitters particles)");
   }
-  if (v.sourceGeometry == "2d")
-    throw std::runtime_error(path + ": the grids of a planar-2D run are a slab with no 3D extent to "
-                             "radiate from; use an RZ or 3D run");
 
   radiation::VoxelEmitterSource source;
   source.x = v.x;

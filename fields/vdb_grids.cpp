@@ -121,10 +121,13 @@ void writeGridFile(const std::string& path, const GridSet& set, const GridFileMe
   fileMeta.insertMeta("step", openvdb::Int64Metadata(meta.step));
   fileMeta.insertMeta("source_geometry", openvdb::StringMetadata(std::string(geometryName(set.source))));
   fileMeta.insertMeta("particles", openvdb::Int64Metadata(static_cast<openvdb::Int64>(set.particles)));
-  // One entry per material (a name may hold any character, so no joined list).
-  fileMeta.insertMeta("material_count", openvdb::Int64Metadata(static_cast<openvdb::Int64>(set.materials.size())));
-  for (std::size_t m = 0; m < set.materials.size(); ++m)
-    fileMeta.insertMeta("material_" + std::to_string(m), openvdb::StringMetadata(set.materials[m]));
+  // One entry per material (a name may hold any character, so no joined list); none for a set
+  // built without the run's materials, which reads as a file from before the list.
+  if (!set.materials.empty()) {
+    fileMeta.insertMeta("material_count", openvdb::Int64Metadata(static_cast<openvdb::Int64>(set.materials.size())));
+    for (std::size_t m = 0; m < set.materials.size(); ++m)
+      fileMeta.insertMeta("material_" + std::to_string(m), openvdb::StringMetadata(set.materials[m]));
+  }
   if (meta.crater) {
     const CraterSetup& c = *meta.crater;
     const bool sphere = c.surface.kind == ReferenceSurface::Kind::Sphere;

@@ -91,19 +91,19 @@ const ShippedScene* findScene(const std::vector<ShippedScene>& scenes, std::stri
   return found;
 }
 
-SceneText readSceneArgument(const std::string& argument) {
+SceneText readSceneArgument(const std::string& argument, const std::string& what) {
   namespace fs = std::filesystem;
   std::error_code ec;
   // A directory of that name (a run's --out) does not hide a shipped scene.
   if (fs::is_directory(argument, ec) && !findShippedScene(argument))
-    throw SceneError(argument + ": is a directory, not a scene file (to resume the run in it: "
-                     "ejecta run --restart " + argument + ")");
+    throw SceneError(argument + ": is a directory, not a " + what + " file" +
+                     (what == "scene" ? " (to resume the run in it: ejecta run --restart " + argument + ")" : ""));
   if (fs::exists(argument, ec) && !fs::is_directory(argument, ec)) {
     std::ifstream in(argument, std::ios::binary);
-    if (!in) throw SceneError(argument + ": cannot open the scene file");
+    if (!in) throw SceneError(argument + ": cannot open the " + what + " file");
     std::ostringstream text;
     text << in.rdbuf();  // (an empty file sets the failbit of `text`: that is no error)
-    if (in.bad()) throw SceneError(argument + ": cannot read the scene file");
+    if (in.bad()) throw SceneError(argument + ": cannot read the " + what + " file");
     return {text.str(), argument};
   }
   std::vector<std::string> ambiguous;

@@ -39,7 +39,9 @@ struct SceneText {
 // A path to an existing file wins; otherwise a shipped scene's name (also over a directory of
 // that name, such as a run's --out). Throws SceneError naming
 // the argument and the reason ("no such file and no shipped scene ...", a directory, unreadable,
-// an ambiguous short name) with a pointer to `ejecta scenes`.
-SceneText readSceneArgument(const std::string& argument);
+// an ambiguous short name) with a pointer to `ejecta scenes`. `what` names the kind of file in
+// those messages ("thermal study", "Whipple study", "geometry"); only a scene's directory gets
+// the pointer to `ejecta run --restart`.
+SceneText readSceneArgument(const std::string& argument, const std::string& what = "scene");
 
 }  // namespace ejecta

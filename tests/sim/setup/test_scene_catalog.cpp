@@ -109,6 +109,15 @@ TEST(SceneCatalog, RefusalsNameTheArgumentAndTheReason) {
     FAIL() << "no error";
   } catch (const SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("is a directory"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("ejecta run --restart"), std::string::npos) << e.what();
+  }
+  // A study's messages name its kind, without the run's --restart pointer.
+  try {
+    readSceneArgument(fs::temp_directory_path().string(), "thermal study");
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a directory, not a thermal study file"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find("--restart"), std::string::npos) << e.what();
   }
 }
 
