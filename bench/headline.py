@@ -28,6 +28,8 @@ SOURCE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BEGIN = "<!-- headline:begin -->"
 END = "<!-- headline:end -->"
 TABLE_FILES = ("README.md", os.path.join("docs", "asteroid_studies.md"))
+# A Whipple shield's verdicts (summary.json's shield_verdict): perforated, not perforated.
+VERDICTS = ("P", "NP")
 
 
 class HeadlineError(Exception):
@@ -71,6 +73,8 @@ def load_manifest(path):
             for key in ("label", "quantity"):
                 need(key in answer, where, "answer[%d] has no '%s'" % (j, key))
             need(isinstance(answer.get("scale", 1), (int, float)), where, "answer[%d]: scale is a number" % j)
+            need(answer.get("verdict", "P") in VERDICTS, where,
+                 "answer[%d]: verdict is the experiment's, one of %s" % (j, ", ".join(VERDICTS)))
     for i, row in enumerate(manifest.get("open", [])):
         for key in ("label", "why"):
             need(key in row, "%s: open[%d]" % (path, i), "no '%s'" % key)
@@ -181,8 +185,13 @@ def read_study(out_root, study, ejecta=None):
     for level in result["levels"]:
         summary = os.path.join(out, "level_%.6g" % level["factor"], "summary.json")
         level["threads"] = meta.get("threads") or 1
+        level["extras"] = None  # no summary: nothing to read a verdict from
         if os.path.exists(summary):
-            level["threads"] = read_json(summary).get("threads", level["threads"])
+            run = read_json(summary)
+            level["threads"] = run.get("threads", level["threads"])
+            # Only a completed run's analysis (as `ejecta converge` reuses only those): a level
+            # re-run by hand and stopped is not the level convergence.json recorded.
+            level["extras"] = (run.get("extras") or {}) if run.get("status") == "completed" else None
     return result
 
 
@@ -208,6 +217,51 @@ def duration(seconds):
     return "%.1f h" % (seconds / 3600)
 
 
+def level_verdict(level):
+    """A level's shield verdict as the row shows it, with what it rests on: the hole's diameter
+    (a perforation) or the rear face's peak bulge (none); None where its run did not analyse a
+    shield (not a Whipple scene, or a level without a completed run's summary)."""
+    extras = level.get("extras") or {}
+    verdict = extras.get("shield_verdict")
+    if verdict not in VERDICTS:
+        return None
+    if verdict == "P":
+        hole = extras.get("shield_hole_diameter_m") or 0.0
+        what = "a %.1f mm hole" % (hole * 1e3) if hole > 0 else extras.get("shield_reason") or "perforated"
+    else:
+        what = "%.1f mm bulge" % ((extras.get("shield_peak_deflection_m") or 0.0) * 1e3)
+    return verdict, what
+
+
+def verdict_row(study, answer, result):
+    """One Markdown row for a verdict (a Whipple shot's P or NP): a verdict is not a number to
+    extrapolate, so the row gives each level's verdict, the finest first in its value column, and
+    how many levels agree with the experiment's (answer["verdict"])."""
+    expected = answer["verdict"]
+    levels = result["levels"]
+    seen = [(l, level_verdict(l)) for l in levels]
+    unread = [l for l, v in seen if v is None]
+    if unread:
+        return ("| %s | no shield verdict for level %s (no completed run's summary.json there, or not a Whipple "
+                "scene: `bench/headline.py --only %s`) | | | | | |") % (
+            answer["label"], ", ".join("%.6g" % l["factor"] for l in unread), study["id"])
+    agree = sum(1 for _, (v, _) in seen if v == expected)
+    verdict, what = seen[-1][1]
+    mark = "" if verdict == expected else "**"
+    value = "%s%s%s (%s); the experiment: %s" % (mark, verdict, mark, what, expected)
+    each = "; ".join("%.3g mm %s (%s)" % (l["spacing_m"] * 1e3, v, w) for l, (v, w) in seen)
+    notes = ["the experiment's verdict at %d of %d spacings: %s" % (agree, len(levels), each)]
+    missing = len(set(study["factors"]) - {l["factor"] for l in levels})
+    if missing:
+        notes.append("%d of the %d levels asked for %s not run yet (`bench/headline.py --only %s`)" % (
+            missing, len(study["factors"]), "has" if missing == 1 else "have", study["id"]))
+    finest = levels[-1]
+    core_seconds = sum(l["wall_seconds"] * l["threads"] for l in levels)
+    return "| %s | %s | — | — | %s | %.3g mm; %s | %s (%d levels) |" % (
+        answer["label"], value, "; ".join(notes), finest["spacing_m"] * 1e3, "{:,}".format(finest["particles"]),
+        duration(core_seconds), len(levels))
+
+
 def answer_row(study, answer, result):
     """One Markdown row: the answer; the finest value with its GCI band (Celik et al. 2008 put
     the band about the finest solution) or, where the procedure does not apply, the spread of the
@@ -218,6 +272,8 @@ def answer_row(study, answer, result):
         return "| %s | not run yet (%s) | | | | | |" % (answer["label"], rerun)
     if "stale" in result:
         return "| %s | stale: %s (%s) | | | | | |" % (answer["label"], result["stale"], rerun)
+    if "verdict" in answer:
+        return verdict_row(study, answer, result)
     scale = answer.get("scale", 1.0)
     unit = answer.get("unit", "")
     found = [q for q in result["quantities"] if q["quantity"] == answer["quantity"]]

@@ -43,12 +43,12 @@ why = "the crater does not stop"
 """
 
 
-def fake_study(out, study, quantities, threads=2):
+def fake_study(out, study, quantities, threads=2, spacing=0.25):
     """A study folder as bench/headline.py and `ejecta converge` leave it."""
     folder = out / study["id"]
     folder.mkdir(parents=True)
     (folder / "study.json").write_text(json.dumps({"definition": headline.definition(study), "threads": threads}))
-    levels = [{"factor": f, "spacing_m": 0.25 * f, "particles": int(1000 / f ** 2), "wall_seconds": 10.0 / f ** 3,
+    levels = [{"factor": f, "spacing_m": spacing * f, "particles": int(1000 / f ** 2), "wall_seconds": 10.0 / f ** 3,
                "values": {"crater_depth_m": 7.0 + f, "target_share_of_impactor_energy": 0.9 + 0.01 * f}}
               for f in study["factors"]]
     (folder / "convergence.json").write_text(json.dumps({"scene": study["scene"], "levels": levels,
@@ -126,6 +126,64 @@ def test_a_scene_edited_since_its_levels_ran_is_refused(tmp_path):
         "stale": "its scene_sha256 changed since it ran"}
     with pytest.raises(headline.HeadlineError, match="neither a file nor scenes/no_such_scene.toml"):
         headline.definition({"scene": "no_such_scene"})
+
+
+VERDICT = """
+[[study]]
+id = "emi"
+scene = "whipple_sph/emi_71"
+factors = [4, 2.666667, 2, 1]
+  [[study.answer]]
+  label = "EMI 71.0"
+  quantity = "shield_peak_deflection_m"
+  verdict = "P"
+"""
+
+
+def test_a_verdict_row_gives_each_levels_verdict_against_the_experiments(tmp_path):
+    manifest = headline.load_manifest(write_manifest(tmp_path / "m.toml", VERDICT))
+    # Three of its four levels ran (the finest, factor 1, not yet).
+    study = dict(manifest["study"][0], factors=[4, 2.666667, 2])
+    fake_study(tmp_path / "out", study, [{"quantity": "shield_peak_deflection_m", "finest": 0.0079, "valid": False,
+                                          "note": "oscillatory convergence"}], spacing=0.2e-3)
+    # Each level's summary.json as a Whipple run writes it: a hole at the coarsest and finest
+    # levels, a bulge without one between (EMI 71.0 as it ran at 0.8, 0.533 and 0.4 mm); the
+    # coarsest ran on one thread, the others on study.json's two.
+    shots = {"4": (1, {"shield_verdict": "P", "shield_hole_diameter_m": 5.54e-3, "shield_peak_deflection_m": 9.8e-3}),
+             "2.66667": (2, {"shield_verdict": "NP", "shield_hole_diameter_m": 0.0, "shield_peak_deflection_m": 1.03e-2}),
+             "2": (2, {"shield_verdict": "P", "shield_hole_diameter_m": 2.12e-3, "shield_peak_deflection_m": 7.9e-3})}
+
+    def write(factor, threads, extras, status="completed"):
+        folder = tmp_path / "out" / "emi" / ("level_" + factor)
+        folder.mkdir(exist_ok=True)
+        (folder / "summary.json").write_text(json.dumps({"status": status, "threads": threads, "extras": extras}))
+
+    for factor, (threads, extras) in shots.items():
+        write(factor, threads, extras)
+    row = headline.table(manifest, str(tmp_path / "out")).splitlines()[2]
+    # The finest level's verdict first; no extrapolation or order of a verdict; every level's
+    # verdict with what it rests on, and how many agree with the experiment's; the level still
+    # to run; the cost: fake_study's wall times 10 / f^3 s times each level's threads
+    # (0.156 x 1 + 0.527 x 2 + 1.25 x 2 = 3.7 s).
+    assert row == ("| EMI 71.0 | P (a 2.1 mm hole); the experiment: P | — | — | the experiment's verdict at 2 of 3 "
+                   "spacings: 0.8 mm P (a 5.5 mm hole); 0.533 mm NP (10.3 mm bulge); 0.4 mm P (a 2.1 mm hole); 1 of "
+                   "the 4 levels asked for has not run yet (`bench/headline.py --only emi`) | 0.4 mm; 250 | 4 s (3 "
+                   "levels) |"), row
+    # A finest verdict against the experiment's is marked; a perforation without a hole says why.
+    write("2", 2, {"shield_verdict": "NP", "shield_peak_deflection_m": 6.4e-3})
+    write("4", 1, {"shield_verdict": "P", "shield_hole_diameter_m": 0.0, "shield_reason": "material behind the wall"})
+    row = headline.table(manifest, str(tmp_path / "out")).splitlines()[2]
+    assert "| **NP** (6.4 mm bulge); the experiment: P |" in row and "at 1 of 3 spacings" in row, row
+    assert "0.8 mm P (material behind the wall)" in row, row
+    # A level that analysed no shield, or whose run did not complete, or with no summary, says so
+    # rather than counting as either verdict.
+    for extras, status in (({}, "completed"), (shots["2"][1], "interrupted"), (None, "completed")):
+        write("2", 2, extras, status)
+        assert "no shield verdict for level 2 (" in headline.table(manifest, str(tmp_path / "out"))
+    os.remove(tmp_path / "out" / "emi" / "level_2" / "summary.json")
+    assert "no shield verdict for level 2 (" in headline.table(manifest, str(tmp_path / "out"))
+    with pytest.raises(headline.HeadlineError, match="verdict is the experiment's, one of P, NP"):
+        headline.load_manifest(write_manifest(tmp_path / "bad.toml", VERDICT.replace('"P"', '"perforated"')))
 
 
 def test_a_quantity_the_study_lacks_says_so(tmp_path):
