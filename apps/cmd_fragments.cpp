@@ -110,7 +110,7 @@ int fragmentsCommand(const FragmentsArgs& args) {
   if (!args.follower.empty()) {
     const SceneText study = readSceneArgument(args.follower, "thermal study");
     const radiation::ThermalStudy follower =
-        radiation::parseThermalStudy(study.text, study.label, fs::path(args.follower).parent_path());
+        radiation::parseThermalStudy(study.text, study.label, study.directory);
     std::optional<radiation::WhippleShield> shield;
     if (!args.shield.empty()) {
       const SceneText text = readSceneArgument(args.shield, "Whipple study");

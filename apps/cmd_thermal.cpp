@@ -95,7 +95,7 @@ int thermalCommand(const ThermalArgs& args) {
   // A file, or a shipped study's name ("thermal/follower", `ejecta scenes`), as `ejecta run` takes scenes.
   const SceneText text = readSceneArgument(args.scene, "thermal study");
   const radiation::ThermalStudy study =
-      radiation::parseThermalStudy(text.text, text.label, fs::path(args.scene).parent_path());
+      radiation::parseThermalStudy(text.text, text.label, text.directory);
   if (args.from.empty())
     throw std::runtime_error(args.scene + ": no hot material: give --from RUN_DIR, SNAPSHOT.h5 or GRIDS.vdb");
   const Inputs in = resolveInputs(args);

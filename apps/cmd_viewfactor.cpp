@@ -81,7 +81,7 @@ int viewfactorCommand(const ViewfactorArgs& args) {
   // A file, or a shipped geometry's name ("geometry/seed_follower", `ejecta scenes`).
   const SceneText text = readSceneArgument(args.geometry, "geometry");
   const radiation::GeometryConfig config =
-      radiation::parseGeometryConfig(text.text, text.label, fs::path(args.geometry).parent_path());
+      radiation::parseGeometryConfig(text.text, text.label, text.directory);
   if (!args.convergenceDir.empty()) return convergenceCommand(args, config);
   radiation::ViewFactorRunOptions run;
   if (args.rays > 0) run.rays = static_cast<std::uint64_t>(args.rays);

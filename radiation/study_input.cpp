@@ -35,7 +35,11 @@ TableReader subTable(const TableReader& t, std::string_view k) {
 
 void readStudyTitle(const TableReader& top, std::string& name, std::string& description) {
   const TableReader study = subTable(top, "study");
-  name = study.optString("name").value_or(fs::path(top.context().source()).stem().string());
+  // Without a name, the file's: its stem, or a shipped file's ("shipped scene 'whipple/haiv'"
+  // gives haiv, not its closing quote).
+  std::string stem = fs::path(top.context().source()).stem().string();
+  while (!stem.empty() && stem.back() == '\'') stem.pop_back();
+  name = study.optString("name").value_or(stem);
   description = study.optString("description").value_or("");
 }
 

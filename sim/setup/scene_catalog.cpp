@@ -104,11 +104,11 @@ SceneText readSceneArgument(const std::string& argument, const std::string& what
     std::ostringstream text;
     text << in.rdbuf();  // (an empty file sets the failbit of `text`: that is no error)
     if (in.bad()) throw SceneError(argument + ": cannot read the " + what + " file");
-    return {text.str(), argument};
+    return {text.str(), argument, fs::path(argument).parent_path()};
   }
   std::vector<std::string> ambiguous;
   if (const ShippedScene* s = findShippedScene(argument, &ambiguous))
-    return {std::string(s->text), "shipped scene '" + s->name + "'"};
+    return {std::string(s->text), "shipped scene '" + s->name + "'", {}};
   if (!ambiguous.empty()) {
     std::string list;
     for (const std::string& c : ambiguous) list += (list.empty() ? "" : ", ") + c;

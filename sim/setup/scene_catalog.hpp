@@ -2,6 +2,7 @@
 // The scenes shipped with ejecta (scenes/, compiled in by cmake/EmbedScenes.cmake), listed with
 // what each is and which command takes it, and found by name: `ejecta run impact_rz` works from
 // any directory, `ejecta scenes` lists them, `ejecta scenes show NAME` prints one as a template.
+#include <filesystem>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -34,6 +35,9 @@ const ShippedScene* findScene(const std::vector<ShippedScene>& scenes, std::stri
 struct SceneText {
   std::string text;
   std::string label;  // the path, or "shipped scene 'impact_rz'" (names the source in errors)
+  // The directory a file's relative paths (a study's mesh) resolve against: the file's own;
+  // empty for a shipped file (the current directory, as a scene's shipped study has).
+  std::filesystem::path directory;
 };
 
 // A path to an existing file wins; otherwise a shipped scene's name (also over a directory of

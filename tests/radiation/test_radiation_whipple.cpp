@@ -366,6 +366,9 @@ speed_max = "15 km/s"
 max_obliquity = "1.1 rad"
 )";
   const WhippleStudy s = parseWhippleStudy(text, "units.toml");
+  EXPECT_EQ(s.name, "units");  // no [study] name: the file's
+  // A shipped file's label names it by its last part, without the label's quote.
+  EXPECT_EQ(parseWhippleStudy(text, "shipped scene 'whipple/units'").name, "units");
   EXPECT_EQ(s.shield.bumperThickness, parseQuantity("1.6 mm", Dimension::Length));
   EXPECT_DOUBLE_EQ(s.shield.bumperDensity, 2700.0);
   EXPECT_EQ(s.shield.bumperDensity, parseQuantity("2.7 t/m^3", Dimension::Density));

@@ -87,6 +87,11 @@ TEST(SceneCatalog, AFileOnDiskWinsOverAShippedName) {
   const SceneText shipped = readSceneArgument("impact_rz");
   EXPECT_EQ(shipped.label, "shipped scene 'impact_rz'");
   EXPECT_EQ(shipped.text, std::string(findShippedScene("impact_rz")->text));
+  // Relative paths in a file resolve beside it; a shipped file's against the current directory.
+  EXPECT_EQ(local.directory, fs::path());  // a bare name: the current directory
+  { std::ofstream(dir / "study.toml") << "x = 1\n"; }
+  EXPECT_EQ(readSceneArgument((dir / "study.toml").string()).directory, dir);
+  EXPECT_EQ(shipped.directory, fs::path());
   fs::remove_all(dir);
 }
 
