@@ -10,7 +10,9 @@ what the study cost (wall time times threads, summed over its levels).
 
 --only runs those studies only (the table still shows every row; a study not run says so).
 --table-only runs nothing. --write puts the table into README.md and docs/asteroid_studies.md
-between their `<!-- headline:begin -->` and `<!-- headline:end -->` lines.
+between their `<!-- headline:begin -->` and `<!-- headline:end -->` lines; there a study with no
+levels on this machine keeps the row the document has for it (runs/ is not in the repository,
+so a machine that re-ran some studies does not blank the others).
 A study whose scene (its name or its file's text) or --set keys changed since its levels ran is
 refused: its old levels would be read back as if they were the new study's. New factors are
 welcome: the levels it has are reused.
@@ -307,17 +309,37 @@ def answer_row(study, answer, result):
         "{:,}".format(finest["particles"]), duration(core_seconds), len(levels), spacings)
 
 
-def table(manifest, out_root, ejecta=None):
+def table(manifest, out_root, ejecta=None, kept=None):
+    """The Markdown table; `kept` (label -> a document's row) gives the row of an answer whose
+    study has not run here."""
     lines = ["| answer | finest run ± GCI band | extrapolated | observed order | note | finest spacing; particles "
              "| cost (core time, all levels) |",
              "|---|---|---|---|---|---|---|"]
     for study in manifest.get("study", []):
         result = read_study(out_root, study, ejecta)
         for answer in study["answer"]:
-            lines.append(answer_row(study, answer, result))
+            if result is None and kept and answer["label"] in kept:
+                lines.append(kept[answer["label"]])
+            else:
+                lines.append(answer_row(study, answer, result))
     for row in manifest.get("open", []):
         lines.append("| %s | — | — | — | %s | | |" % (row["label"], row["why"]))
     return "\n".join(lines) + "\n"
+
+
+def rows_between_markers(path):
+    """The rows of the table between the headline markers of `path`, by their first cell."""
+    with open(path) as f:
+        content = f.read()
+    start, stop = content.find(BEGIN), content.find(END)
+    if start < 0 or stop < start:
+        return {}
+    rows = {}
+    for line in content[start + len(BEGIN):stop].splitlines():
+        cells = line.split(" | ")
+        if line.startswith("| ") and not line.startswith("|---") and len(cells) > 1:
+            rows[cells[0][2:]] = line
+    return rows
 
 
 def write_between_markers(path, text):
@@ -363,7 +385,8 @@ def main(argv=None):
         sys.stdout.write(text)
         if args.write:
             for name in TABLE_FILES:
-                write_between_markers(os.path.join(SOURCE, name), text)
+                path = os.path.join(SOURCE, name)
+                write_between_markers(path, table(manifest, args.out, args.ejecta, rows_between_markers(path)))
     except HeadlineError as e:
         sys.exit("headline: " + str(e))
     except subprocess.CalledProcessError as e:

@@ -232,6 +232,25 @@ def test_the_table_goes_between_the_markers_and_nothing_else_moves(tmp_path):
     assert bare.read_text() == "no markers\n"
 
 
+def test_a_document_keeps_its_rows_of_studies_not_run_here(tmp_path):
+    # --write on a machine without a study's levels keeps the document's row for it.
+    manifest = headline.load_manifest(write_manifest(tmp_path / "m.toml", STUDY))
+    doc = tmp_path / "doc.md"
+    measured = "| crater depth | 6.23 m ± 0.1 m | 6.3 m | 1.1 | | 0.0884 m; 246,412 | 22 min (5 levels) |"
+    doc.write_text("%s\n| answer | finest |\n|---|---|\n%s\n%s\n" % (headline.BEGIN, measured, headline.END))
+    kept = headline.rows_between_markers(str(doc))
+    assert kept == {"answer": "| answer | finest |", "crater depth": measured}
+    rows = headline.table(manifest, str(tmp_path / "nothing"), kept=kept).splitlines()
+    assert rows[2] == measured
+    # A row the document lacks is still "not run yet"; a study that ran replaces the kept row.
+    assert rows[3].startswith("| share | not run yet")
+    fake_study(tmp_path / "out", manifest["study"][0], [
+        {"quantity": "crater_depth_m", "finest": 7.7, "valid": False, "note": "two equal values"},
+        {"quantity": "target_share_of_impactor_energy", "finest": 0.9, "valid": False, "note": "x"}])
+    assert headline.table(manifest, str(tmp_path / "out"), kept=kept).splitlines()[2].startswith("| crater depth | 7.70 m")
+    assert headline.rows_between_markers(str(tmp_path / "m.toml")) == {}  # no markers: nothing kept
+
+
 def test_the_shipped_documents_have_the_markers():
     for name in headline.TABLE_FILES:
         content = open(os.path.join(SOURCE, name)).read()
