@@ -14,16 +14,17 @@
 #include <stdexcept>
 
 #include "apps/commands.hpp"
-#include "sim/setup/scene_catalog.hpp"
+#include "core/join.hpp"
 #include "coupling/grid_emitters.hpp"
 #include "coupling/snapshot_emitters.hpp"
 #include "coupling/surface_occluder.hpp"
 #include "coupling/thermal_charts.hpp"
 #include "coupling/thermal_outputs.hpp"
 #include "radiation/thermal_study.hpp"
-#include "sim/run/run.hpp"
 #include "sim/io/snapshot.hpp"
 #include "sim/io/snapshot_checks.hpp"
+#include "sim/run/run.hpp"
+#include "sim/setup/scene_catalog.hpp"
 
 namespace ejecta::app {
 
@@ -178,8 +179,7 @@ int thermalCommand(const ThermalArgs& args) {
   render::ChartRunner charts;
   if (!args.noCharts && charts.chartsAvailable()) {
     try {
-      for (const std::string& c : writeThermalCharts(charts, result, out, study.name))
-        chartsText += (chartsText.empty() ? "" : ", ") + c;
+      chartsText = joinList(writeThermalCharts(charts, result, out, study.name));
     } catch (const std::exception& e) {
       std::fprintf(stderr, "ejecta: thermal charts failed: %s\n", e.what());
     }

@@ -8,11 +8,11 @@
 #include <stdexcept>
 
 #include "apps/commands.hpp"
-#include "sim/setup/scene_catalog.hpp"
 #include "core/atomic_file.hpp"
 #include "radiation/geometry_file.hpp"
 #include "radiation/view_factor_convergence.hpp"
 #include "render/charts.hpp"
+#include "sim/setup/scene_catalog.hpp"
 
 namespace fs = std::filesystem;
 

@@ -7,11 +7,11 @@
 #include <stdexcept>
 
 #include "apps/commands.hpp"
-#include "sim/setup/scene_catalog.hpp"
-#include "coupling/json_text.hpp"
 #include "core/atomic_file.hpp"
+#include "coupling/json_text.hpp"
 #include "radiation/whipple_study.hpp"
 #include "render/charts.hpp"
+#include "sim/setup/scene_catalog.hpp"
 
 namespace ejecta::app {
 

@@ -13,6 +13,7 @@
 #include "apps/commands.hpp"
 #include "apps/launch_check.hpp"
 #include "apps/thread_limit.hpp"
+#include "core/join.hpp"
 #include "sim/io/snapshot.hpp"  // kEjectaVersion
 #include "sim/parallel/communicator.hpp"
 
@@ -262,8 +263,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     // A mistyped command reads to CLI11 as a stray argument: name it.
     if (argc > 1 && argv[1][0] != '-' && app.get_subcommands().empty()) {
-      std::string commands;
-      for (const CLI::App* sub : app.get_subcommands({})) commands += (commands.empty() ? "" : ", ") + sub->get_name();
+      const std::string commands =
+          ejecta::joinList(app.get_subcommands({}), [](const CLI::App* sub) { return sub->get_name(); });
       std::fprintf(stderr, "ejecta: error: unknown command '%s' (commands: %s)\n", argv[1], commands.c_str());
       return 1;
     }

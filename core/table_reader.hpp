@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/input_error.hpp"
+#include "core/join.hpp"
 #include "core/schema.hpp"
 #include "core/units.hpp"
 
@@ -33,14 +34,7 @@ inline bool contains(const KeyList& keys, std::string_view k) {
   return false;
 }
 
-inline std::string joinKeys(const KeyList& keys) {
-  std::string out;
-  for (const KeySpec& k : keys) {
-    if (!out.empty()) out += ", ";
-    out += k.name;
-  }
-  return out;
-}
+inline std::string joinKeys(const KeyList& keys) { return joinList(keys, &KeySpec::name); }
 
 inline std::string typeName(const toml::node& n) {
   switch (n.type()) {

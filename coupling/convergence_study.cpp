@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "core/csv.hpp"
+#include "core/join.hpp"
 #include "coupling/run_thermal.hpp"
 #include "fields/fragment_outputs.hpp"
 #include "fields/history_csv.hpp"
@@ -207,12 +208,9 @@ ConvergenceResult runVerificationConvergence(const std::string& problem, const C
     for (const std::string& q : o.quantities) {
       const auto it = std::find_if(run.metrics.begin(), run.metrics.end(),
                                    [&](const verify::Metric& m) { return m.name == q; });
-      if (it == run.metrics.end()) {
-        std::string known;
-        for (const verify::Metric& m : run.metrics) known += (known.empty() ? "" : ", ") + m.name;
+      if (it == run.metrics.end())
         throw std::invalid_argument("converge: verification problem '" + problem + "' has no metric '" + q +
-                                    "'; its metrics: " + known);
-      }
+                                    "'; its metrics: " + joinList(run.metrics, &verify::Metric::name));
       level.values[q] = it->value;
     }
     result.levels.push_back(std::move(level));

@@ -7,6 +7,7 @@
 #include <span>
 #include <stdexcept>
 
+#include "core/join.hpp"
 #include "fields/grid_voxels.hpp"
 
 namespace ejecta::coupling {
@@ -23,10 +24,8 @@ radiation::Emitters emittersFromGridFile(const std::string& path, const GridEmit
     throw std::runtime_error(path + ": the grids of a planar-2D run are a slab with no 3D extent to "
                              "radiate from; use an RZ or 3D run");
   if (!v.missingFractions.empty()) {
-    std::string written, missing;
-    for (const std::string& m : v.materials) written += (written.empty() ? "" : ", ") + m;
-    for (const std::string& m : v.missingFractions) missing += (missing.empty() ? "" : ", ") + m;
-    throw std::runtime_error(path + ": the file has the fraction grids of " + written + " but not of " + missing +
+    throw std::runtime_error(path + ": the file has the fraction grids of " + joinList(v.materials) + " but not of " +
+                             joinList(v.missingFractions) +
                              " (the run's other materials): voxels of those alone would be dropped" +
                              (v.fractionsAreFill ? ", and the voxels they share counted part-filled" : "") +
                              "; write every material's fraction (the scene's [fields] grids = [\"temperature\", "

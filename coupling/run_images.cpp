@@ -7,6 +7,7 @@
 #include <memory>
 #include <sstream>
 
+#include "core/join.hpp"
 #include "coupling/crater_charts.hpp"
 #include "coupling/csv_header.hpp"
 #include "coupling/category_images.hpp"
@@ -196,9 +197,7 @@ void addImageOutputs(RunOptions& options, const Scene& scene, bool charts) {
       return;
     }
     try {
-      std::string list;
-      for (const std::string& c : writeRunCharts(dir, copy)) list += (list.empty() ? "" : ", ") + c;
-      summary.extras.push_back({"charts", list});
+      summary.extras.push_back({"charts", joinList(writeRunCharts(dir, copy))});
     } catch (const std::exception& e) {
       summary.extras.push_back({"charts_note", std::string("charts failed: ") + e.what()});
     }

@@ -5,6 +5,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "core/join.hpp"
+
 namespace ejecta::fields {
 
 const std::vector<CraterScalingLaw>& craterScalingClasses() {
@@ -31,10 +33,7 @@ const CraterScalingLaw* craterScalingClass(std::string_view name) {
 }
 
 std::string craterScalingClassNames() {
-  std::string names;
-  for (const CraterScalingLaw& law : craterScalingClasses())
-    names += (names.empty() ? "" : ", ") + law.name;
-  return names;
+  return joinList(craterScalingClasses(), &CraterScalingLaw::name);
 }
 
 namespace {

@@ -1,6 +1,7 @@
 // Slices and point samples of a grid file. The one translation unit of the sampler that
 // includes OpenVDB.
 #include "fields/grid_slice.hpp"
+#include "core/join.hpp"
 #include "fields/vdb_file.hpp"
 
 #include <openvdb/openvdb.h>
@@ -30,9 +31,9 @@ void openFile(openvdb::io::File& file, const std::string& path) { openGridFile(f
 
 void requireGrid(openvdb::io::File& file, const std::string& path, const std::string& name) {
   if (file.hasGrid(name)) return;
-  std::string names;
-  for (auto it = file.beginName(); it != file.endName(); ++it) names += (names.empty() ? "" : ", ") + *it;
-  throw std::runtime_error(path + ": no grid named '" + name + "' (the file has: " + names + ")");
+  std::vector<std::string> names;
+  for (auto it = file.beginName(); it != file.endName(); ++it) names.push_back(*it);
+  throw std::runtime_error(path + ": no grid named '" + name + "' (the file has: " + joinList(names) + ")");
 }
 
 // The header from a grid's metadata and transform (the tree need not be loaded); `box` is the

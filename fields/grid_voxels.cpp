@@ -2,6 +2,7 @@
 // grids looked up at the kept voxels. The one translation unit of the reader that includes
 // OpenVDB.
 #include "fields/grid_voxels.hpp"
+#include "core/join.hpp"
 #include "fields/vdb_file.hpp"
 
 #include <openvdb/openvdb.h>
@@ -56,11 +57,8 @@ GridVoxels readGridVoxels(const std::string& path, const GridVoxelOptions& optio
   openGridFile(file, path);
   std::vector<std::string> names;
   for (auto it = file.beginName(); it != file.endName(); ++it) names.push_back(*it);
-  if (!file.hasGrid(options.grid)) {
-    std::string list;
-    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
-    throw std::runtime_error(path + ": no grid named '" + options.grid + "' (the file has: " + list + ")");
-  }
+  if (!file.hasGrid(options.grid))
+    throw std::runtime_error(path + ": no grid named '" + options.grid + "' (the file has: " + joinList(names) + ")");
   const openvdb::FloatGrid::Ptr grid = readFloat(file, path, options.grid);
   if (!grid->transform().isLinear() || !grid->hasUniformVoxels())
     throw std::runtime_error(path + ": grid '" + options.grid + "' does not have cubic voxels on a linear transform");
@@ -112,13 +110,22 @@ GridVoxels readGridVoxels(const std::string& path, const GridVoxelOptions& optio
     if (!out.materials.empty()) {
       const openvdb::MetaMap::Ptr meta = file.getMetadata();
       const auto count = meta->getMetadata<openvdb::Int64Metadata>("material_count");
+      std::vector<std::string> listed;
       for (openvdb::Int64 m = 0; count && m < count->value(); ++m) {
         const auto name = meta->getMetadata<openvdb::StringMetadata>("material_" + std::to_string(m));
         if (!name) throw std::runtime_error(path + ": material_count is " + std::to_string(count->value()) +
                                             " but material_" + std::to_string(m) + " is missing");
+        listed.push_back(name->value());
         if (std::find(out.materials.begin(), out.materials.end(), name->value()) == out.materials.end())
           out.missingFractions.push_back(name->value());
       }
+      // A fraction of a material the run did not have: the file was edited or put together from
+      // two runs, and its fractions no longer describe one body. (No list: a file from before it.)
+      for (const std::string& m : out.materials)
+        if (count && std::find(listed.begin(), listed.end(), m) == listed.end())
+          throw std::runtime_error(path + ": grid 'fraction_" + m + "' is of a material the file's material list (" +
+                                   (listed.empty() ? std::string("empty") : joinList(listed)) +
+                                   ") does not have; was the file put together from two runs?");
     }
   }
   file.close();

@@ -1,6 +1,7 @@
 // Level set -> triangles with OpenVDB's volumeToMesh. The one translation unit of the surface
 // mesher that includes OpenVDB.
 #include "fields/surface_mesh.hpp"
+#include "core/join.hpp"
 #include "fields/vdb_file.hpp"
 
 #include <openvdb/openvdb.h>
@@ -28,9 +29,9 @@ openvdb::FloatGrid::Ptr readFloatGrid(const std::string& path, const std::string
   openvdb::io::File file(path);
   openGridFile(file, path);
   if (!file.hasGrid(name)) {
-    std::string names;
-    for (auto it = file.beginName(); it != file.endName(); ++it) names += (names.empty() ? "" : ", ") + *it;
-    throw std::runtime_error(path + ": no grid named '" + name + "' (the file has: " + names + ")");
+    std::vector<std::string> names;
+    for (auto it = file.beginName(); it != file.endName(); ++it) names.push_back(*it);
+    throw std::runtime_error(path + ": no grid named '" + name + "' (the file has: " + joinList(names) + ")");
   }
   auto grid = openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid(name));
   file.close();

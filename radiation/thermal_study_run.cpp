@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/join.hpp"
 #include "radiation/radiative_balance.hpp"
 #include "radiation/thermal_study.hpp"
 #include "radiation/wall_implicit.hpp"
@@ -83,12 +84,9 @@ ThermalResult runThermalStudy(const ThermalStudy& study, const std::vector<PassF
   }
   auto checkPatches = [&](const std::vector<std::string>& names, const std::string& where) {
     for (const std::string& n : names)
-      if (mesh0.findPatch(n) < 0) {
-        std::string list;
-        for (const std::string& p : mesh0.patchNames) list += std::string(list.empty() ? "" : ", ") + p;
+      if (mesh0.findPatch(n) < 0)
         throw ThermalStudyError(study.source + ": " + where + ": the spacecraft has no patch '" + n +
-                                "'; its patches: " + list);
-      }
+                                "'; its patches: " + joinList(mesh0.patchNames));
   };
   for (const WallSpec& w : study.walls)
     checkPatches(w.patches, "line " + std::to_string(w.line) + ", walls");

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/csv.hpp"
+#include "core/join.hpp"
 
 namespace ejecta::radiation {
 
@@ -35,12 +36,6 @@ std::optional<FactorIndex> locate(const ViewFactorReport& report, const std::str
 Estimate valueAt(const ViewFactorReport& report, const FactorIndex& at) {
   const ReceiverResult& r = report.receivers[at.receiver].result;
   return at.kind == 0 ? r.toPatch[at.target] : r.toGroup[at.target];
-}
-
-std::string names(const std::vector<std::string>& list) {
-  std::string out;
-  for (const std::string& n : list) out += (out.empty() ? "" : ", ") + n;
-  return out;
 }
 
 std::string number(double v) {
@@ -86,7 +81,7 @@ ViewFactorConvergence studyViewFactorConvergence(const GeometryConfig& config,
       targets.insert(targets.end(), finest.groupNames.begin(), finest.groupNames.end());
       throw GeometryFileError(config.source + ":" + std::to_string(ref.line) +
                               ": key 'references': no factor from '" + ref.from + "' to '" + ref.to +
-                              "' (receivers: " + names(receivers) + "; targets: " + names(targets) + ")");
+                              "' (receivers: " + joinList(receivers) + "; targets: " + joinList(targets) + ")");
     }
     study.factors.push_back({ref.from, ref.to, ref.value, ref.source});
     where.push_back(*at);

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/join.hpp"
+
 namespace ejecta::radiation {
 
 namespace {
@@ -115,10 +117,8 @@ const WallMaterial& wallMaterial(std::string_view name) {
   const auto it = std::find_if(table.begin(), table.end(),
                                [&](const WallMaterial& m) { return m.name == key; });
   if (it != table.end()) return *it;
-  std::string known;
-  for (const auto& m : table) known += (known.empty() ? "" : ", ") + m.name;
   throw std::invalid_argument("unknown wall material '" + std::string(name) + "' (known: " +
-                              known + ")");
+                              joinList(table, &WallMaterial::name) + ")");
 }
 
 WallMaterial seedAluminium() {

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/join.hpp"
+
 namespace ejecta {
 
 namespace {
@@ -47,9 +49,8 @@ void requirePositive(double value, const char* what) {
 const JwlParams& jwlExplosive(std::string_view name) {
   for (const auto& p : library())
     if (p.name == name) return p;
-  std::string known;
-  for (const auto& p : library()) known += (known.empty() ? "" : ", ") + p.name;
-  throw std::invalid_argument("unknown JWL explosive '" + std::string(name) + "'; known: " + known);
+  throw std::invalid_argument("unknown JWL explosive '" + std::string(name) + "'; known: " +
+                              joinList(library(), &JwlParams::name));
 }
 
 std::vector<std::string> jwlExplosiveNames() {

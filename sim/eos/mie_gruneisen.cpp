@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/join.hpp"
+
 namespace ejecta {
 
 namespace {
@@ -78,10 +80,8 @@ const std::vector<ShockMaterial>& library() {
 const ShockMaterial& shockMaterial(std::string_view name) {
   for (const auto& m : library())
     if (m.name == name) return m;
-  std::string known;
-  for (const auto& m : library()) known += (known.empty() ? "" : ", ") + m.name;
   throw std::invalid_argument("unknown shock-EOS material '" + std::string(name) +
-                              "'; known: " + known);
+                              "'; known: " + joinList(library(), &ShockMaterial::name));
 }
 
 std::vector<std::string> shockMaterialNames() {

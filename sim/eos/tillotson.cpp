@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/join.hpp"
+
 namespace ejecta {
 
 namespace {
@@ -74,10 +76,8 @@ const TillotsonParameters& tillotsonLibrary(std::string_view name) {
   for (const auto& entry : libraryTable()) {
     if (entry.name == name) return entry;
   }
-  std::string known;
-  for (const auto& entry : libraryTable()) known += (known.empty() ? "" : ", ") + entry.name;
   throw std::invalid_argument("unknown Tillotson material '" + std::string(name) +
-                              "'; known: " + known);
+                              "'; known: " + joinList(libraryTable(), &TillotsonParameters::name));
 }
 
 std::vector<std::string> tillotsonLibraryNames() {

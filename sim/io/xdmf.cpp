@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "core/atomic_file.hpp"
+#include "core/join.hpp"
 
 namespace ejecta {
 
@@ -60,8 +61,7 @@ void writeAttribute(std::ostream& out, const XdmfEntry& entry, const XdmfAttribu
       << "\" Center=\"Node\">\n";
   writeUnits(out, spec);
   if (spec.components > 1 && !vector) {
-    std::string names;
-    for (const std::string& c : xdmfComponentNames(spec, entry.geometry)) names += (names.empty() ? "" : ", ") + c;
+    const std::string names = joinList(xdmfComponentNames(spec, entry.geometry));
     out << "        <Information Name=\"components\" Value=\"" << xmlEscape(names) << "\"/>\n";
   }
   writeDataItem(out, spec.components == 1 ? n : n + " " + std::to_string(spec.components), spec,

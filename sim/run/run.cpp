@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "core/atomic_file.hpp"
+#include "core/join.hpp"
 #include "sim/io/snapshot.hpp"
 #include "sim/io/snapshot_checks.hpp"
 #include "sim/io/xdmf.hpp"
@@ -517,11 +518,9 @@ void requireRestartChangeable(const std::string& change, const std::string& runD
   if (change.find('=') == std::string::npos)
     throw SceneError("restart of " + runDir + ": --set '" + change + "' is not key=value");
   if (std::find(keys.begin(), keys.end(), key) != keys.end()) return;
-  std::string list;
-  for (const std::string& k : keys) list += (list.empty() ? "" : ", ") + k;
   throw SceneError("restart of " + runDir + ": key '" + key + "' cannot change at a restart (the "
                    "run so far was made with the stored value; changing it midway would make the "
-                   "outputs of no one scene); a restart may change " + list +
+                   "outputs of no one scene); a restart may change " + joinList(keys) +
                    ". To run with another value, start a new run");
 }
 

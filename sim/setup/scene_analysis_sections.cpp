@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/join.hpp"
 #include "sim/setup/scene_sections.hpp"
 
 namespace ejecta::scene_detail {
@@ -18,9 +19,7 @@ std::size_t shieldBody(const TableReader& r, const Scene& scene, std::string_vie
             "body '" + name + "' must be a box (a plate), not another shape");
     return b;
   }
-  std::string known;
-  for (const BodySpec& b : scene.bodies) known += (known.empty() ? "" : ", ") + b.name;
-  r.fail(key, "no body named '" + name + "'; the bodies are: " + known);
+  r.fail(key, "no body named '" + name + "'; the bodies are: " + joinList(scene.bodies, &BodySpec::name));
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/input_error.hpp"
+#include "core/join.hpp"
 #include "sim/setup/embedded_scenes.hpp"
 
 namespace ejecta {
@@ -110,9 +111,7 @@ SceneText readSceneArgument(const std::string& argument, const std::string& what
   if (const ShippedScene* s = findShippedScene(argument, &ambiguous))
     return {std::string(s->text), "shipped scene '" + s->name + "'", {}};
   if (!ambiguous.empty()) {
-    std::string list;
-    for (const std::string& c : ambiguous) list += (list.empty() ? "" : ", ") + c;
-    throw SceneError(argument + ": several shipped scenes have this name (" + list +
+    throw SceneError(argument + ": several shipped scenes have this name (" + joinList(ambiguous) +
                      "): give the full name");
   }
   throw SceneError(argument + ": cannot open: no such file, and no shipped scene of that name "

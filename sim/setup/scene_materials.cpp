@@ -5,6 +5,7 @@
 #include <set>
 #include <string>
 
+#include "core/join.hpp"
 #include "sim/eos/eos_catalog.hpp"
 #include "sim/solid/model_keys.hpp"
 #include "sim/setup/scene_sections.hpp"
@@ -85,15 +86,10 @@ void readMaterials(const TableReader& root, Scene& scene) {
       r.check(m.gamma > 1.0, "gamma", "must exceed 1 (got " + formatQuantity(m.gamma, {}) + ")");
     }
     if (const std::optional<std::string> library = r.optString("library")) {
-      std::string known;
-      bool found = false;
-      for (const std::string& n : kind.libraryNames) {
-        known += (known.empty() ? "" : ", ") + n;
-        found = found || n == *library;
-      }
-      r.check(found, "library",
+      const auto& names = kind.libraryNames;
+      r.check(std::find(names.begin(), names.end(), *library) != names.end(), "library",
               "no " + m.eos + " library entry '" + *library + "'" +
-                  (known.empty() ? std::string(" (this eos has no library)") : "; known: " + known));
+                  (names.empty() ? std::string(" (this eos has no library)") : "; known: " + joinList(names)));
       m.library = *library;
     }
     if (const toml::table* params = r.optTable("parameters")) {
@@ -103,15 +99,13 @@ void readMaterials(const TableReader& root, Scene& scene) {
         for (const EosParameter& p : kind.parameters)
           if (p.key == k.str()) found = &p;
         if (!found) {
-          std::string known;
-          for (const EosParameter& p : kind.parameters)
-            known += (known.empty() ? "" : ", ") + std::string(p.key);
-          if (known.empty())
+          if (kind.parameters.empty())
             pr.fail(k.str(), "eos '" + m.eos + "' takes no parameters" +
                                  (kind.constantsElsewhere.empty()
                                       ? std::string()
                                       : ": " + std::string(kind.constantsElsewhere)));
-          pr.fail(k.str(), "not a parameter of eos '" + m.eos + "'; its parameters: " + known);
+          pr.fail(k.str(), "not a parameter of eos '" + m.eos + "'; its parameters: " +
+                                 joinList(kind.parameters, &EosParameter::key));
         }
         m.parameters.emplace_back(std::string(k.str()),
                                   pr.quantityOf(node, pr.key(k.str()), found->dimension));

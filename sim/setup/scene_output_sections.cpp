@@ -5,6 +5,7 @@
 #include <set>
 #include <string>
 
+#include "core/join.hpp"
 #include "sim/state/particle_fields.hpp"
 #include "sim/setup/scene_sections.hpp"
 
@@ -116,12 +117,10 @@ void readGridImages(const TableReader& r, Scene& scene) {
       written.push_back("surface");
       for (const MaterialSpec& m : scene.materials) written.push_back("surface_" + m.name);
     }
-    std::string list;
-    for (const std::string& w : written) list += (list.empty() ? "" : ", ") + w;
     for (const std::string& n : *names) {
       bool known = false;
       for (const std::string& w : written) known = known || w == n;
-      r.check(known, "grids", "'" + n + "' is not a grid the run writes (" + list + ")");
+      r.check(known, "grids", "'" + n + "' is not a grid the run writes (" + joinList(written) + ")");
     }
     im.grids = *names;
   }

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/input_error.hpp"
+#include "core/join.hpp"
 #include "sim/eos/eos_catalog.hpp"
 #include "sim/solid/material_spec.hpp"
 #include "sim/solid/model_keys.hpp"
@@ -65,9 +66,8 @@ ThermalModel makeThermal(const MaterialSpec& spec, const std::optional<double>& 
   const std::string libraryName = !t.library.empty() ? t.library : spec.library;
   const ThermalLibraryEntry* entry = libraryName.empty() ? nullptr : findThermalEntry(libraryName);
   if (!t.library.empty() && !entry) {
-    std::string known;
-    for (const ThermalLibraryEntry& e : thermalLibrary()) known += (known.empty() ? "" : ", ") + e.name;
-    fail("thermal.library: no entry '" + t.library + "'; known: " + known);
+    fail("thermal.library: no entry '" + t.library + "'; known: " +
+         joinList(thermalLibrary(), &ThermalLibraryEntry::name));
   }
   ThermalModel model;
   model.initialTemperature = valueOr(t, "initial_temperature", model.initialTemperature);

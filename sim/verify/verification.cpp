@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/atomic_file.hpp"
+#include "core/join.hpp"
 #include "sim/eos/mie_gruneisen.hpp"
 #include "sim/exact/radial_euler.hpp"
 #include "sim/exact/riemann.hpp"
@@ -394,9 +395,8 @@ const std::vector<Problem>& problems() {
 Report runProblem(const std::string& name, const Options& options) {
   for (const Problem& p : problems())
     if (p.name == name) return p.run(options);
-  std::string known;
-  for (const Problem& p : problems()) known += (known.empty() ? "" : ", ") + p.name;
-  throw std::invalid_argument("unknown verification problem '" + name + "' (known: " + known + ")");
+  throw std::invalid_argument("unknown verification problem '" + name + "' (known: " +
+                              joinList(problems(), &Problem::name) + ")");
 }
 
 std::string reportJson(const Report& r) {

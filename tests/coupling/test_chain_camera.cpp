@@ -4,7 +4,6 @@
 // with cut_at / --cut-at must remove what lies beyond it. Bad camera keys are refused with the
 // scene file and key named.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <string>
@@ -12,6 +11,7 @@
 #include "render/png_io.hpp"
 #include "sim/setup/scene.hpp"
 #include "support/command_line.hpp"
+#include "support/temp_dir_test.hpp"
 
 namespace fs = std::filesystem;
 
@@ -65,16 +65,8 @@ Halves colouredHalves(const fs::path& png) {
   return h;
 }
 
-class Camera : public ::testing::Test {
+class Camera : public ejecta::test::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("ejecta_chain_camera_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   // Runs the block with this [images] table; returns the run directory.
   fs::path runBlock(const std::string& images) {
     writeTextFile(dir_ / "block.toml", blockScene(images));
@@ -86,7 +78,6 @@ class Camera : public ::testing::Test {
         << out;
     return dir_ / "run";
   }
-  fs::path dir_;
 };
 
 TEST_F(Camera, RenderCommandPlacesTheCameraWhereAsked) {

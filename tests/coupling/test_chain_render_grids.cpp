@@ -6,7 +6,6 @@
 // pictures of its grid files at their cadence; bad [images] keys are refused before the run.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -23,6 +22,7 @@
 #include "render/png_io.hpp"
 #include "support/command_line.hpp"
 #include "support/tiny_impact.hpp"
+#include "support/temp_dir_test.hpp"
 
 namespace fs = std::filesystem;
 
@@ -72,17 +72,7 @@ std::string describe(const Rgba8& c) {
   return "(" + std::to_string(c.r) + ", " + std::to_string(c.g) + ", " + std::to_string(c.b) + ")";
 }
 
-class RenderGrids : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("ejecta_chain_render_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
-};
+class RenderGrids : public ejecta::test::TempDirTest {};
 
 ejecta::fields::GridFileMeta meta(bool levelSet) {
   ejecta::fields::GridFileMeta m;

@@ -4,7 +4,6 @@
 // refused with exit status 1 and the reason; summary.json gives the time loop's and the whole
 // command's wall time.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -12,6 +11,7 @@
 #include <string>
 
 #include "support/command_line.hpp"
+#include "support/temp_dir_test.hpp"
 
 namespace fs = std::filesystem;
 
@@ -21,16 +21,9 @@ using ejecta::test::kEjecta;
 using ejecta::test::readTextFile;
 using ejecta::test::runCommand;
 
-class RunControl : public ::testing::Test {
+class RunControl : public ejecta::test::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("ejecta_run_control_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   std::string sod() const { return std::string(EJECTA_SOURCE_DIR) + "/scenes/verification/sod_1d.toml"; }
-  fs::path dir_;
 };
 
 std::size_t countOf(const std::string& text, const std::string& what) {

@@ -1,7 +1,6 @@
 // coupling/grid_emitters: a grid file's hot voxels as emitters, refused where the file holds the
 // fraction grids of only some of the run's materials (the others' voxels would be dropped).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <stdexcept>
@@ -11,6 +10,7 @@
 #include "coupling/grid_emitters.hpp"
 #include "fields/grid_set.hpp"
 #include "fields/vdb_grids.hpp"
+#include "support/temp_dir_test.hpp"
 
 namespace ejecta::coupling {
 namespace {
@@ -45,15 +45,7 @@ std::string writeHotBlock(const fs::path& file, const std::vector<std::string>& 
   return file.string();
 }
 
-class GridEmitters : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("ejecta_grid_emitters_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
-};
+class GridEmitters : public test::TempDirTest {};
 
 TEST_F(GridEmitters, EveryMaterialsFractionGivesFullVoxels) {
   const std::string file = writeHotBlock(dir_ / "all.vdb", {"rock", "iron"}, {"rock", "iron"});

@@ -4,7 +4,6 @@
 // (through OpenVDB and through the vdb_print tool).
 #include <gtest/gtest.h>
 #include <omp.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +18,7 @@
 #include "fields/sparse_lattice.hpp"
 #include "fields/vdb_grids.hpp"
 #include "sim/setup/scene.hpp"
+#include "support/temp_dir_test.hpp"
 
 namespace fs = std::filesystem;
 
@@ -302,15 +302,7 @@ pressure = 0.0
   EXPECT_THROW(parseScene(base + "[fields]\nvoxel = \"-1 m\"\n", "f.toml"), SceneError);
 }
 
-class GridFiles : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("ejecta_fields_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
-};
+class GridFiles : public test::TempDirTest {};
 
 GridFileMeta meta() {
   GridFileMeta m;

@@ -4,7 +4,6 @@
 // active voxels, with its metadata; a fog ball meshed at half its density is the sphere; errors
 // name the file and the grid.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,6 +17,7 @@
 #include "fields/grid_slice.hpp"
 #include "fields/surface_mesh.hpp"
 #include "fields/vdb_grids.hpp"
+#include "support/temp_dir_test.hpp"
 
 namespace ejecta::fields {
 namespace {
@@ -25,16 +25,7 @@ namespace {
 namespace fs = std::filesystem;
 constexpr double kPi = std::numbers::pi;
 
-class SliceFiles : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("ejecta_fields_slice_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  fs::path dir_;
-};
+class SliceFiles : public test::TempDirTest {};
 
 GridFileMeta meta(bool levelSet) {
   GridFileMeta m;

@@ -2,7 +2,6 @@
 // level set meshed by volumeToMesh against the sphere's exact area and volume (at the surface,
 // moved inwards, and adaptively), and the hot voxels of a grid whose every value is known.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +14,7 @@
 #include "fields/grid_voxels.hpp"
 #include "fields/surface_mesh.hpp"
 #include "fields/vdb_grids.hpp"
+#include "support/temp_dir_test.hpp"
 
 namespace ejecta::fields {
 namespace {
@@ -22,16 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 constexpr double kPi = std::numbers::pi;
 
-class SurfaceFiles : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("ejecta_fields_surface_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  fs::path dir_;
-};
+class SurfaceFiles : public test::TempDirTest {};
 
 GridFileMeta meta() {
   GridFileMeta m;
@@ -313,6 +304,24 @@ TEST_F(SurfaceFiles, MaterialsWithoutAFractionGridAreNamed) {
   GridVoxelOptions bare;
   bare.fractions = false;
   EXPECT_TRUE(readGridVoxels(path("some.vdb"), bare).missingFractions.empty());
+}
+
+TEST_F(SurfaceFiles, AFractionOfAMaterialNotListedIsRefused) {
+  // fraction_iron in a file whose run had rock and ice only: the file and the grid are named.
+  const std::string file = writeKnownGrid(path("mixed.vdb"), 0.2, false, {"rock", "ice"});
+  try {
+    readGridVoxels(file);
+    FAIL() << "a fraction grid of a material the file does not list was accepted";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("mixed.vdb"), std::string::npos) << what;
+    EXPECT_NE(what.find("'fraction_iron'"), std::string::npos) << what;
+    EXPECT_NE(what.find("(rock, ice)"), std::string::npos) << what;
+  }
+  // Without the fractions asked for, the grid is read.
+  GridVoxelOptions bare;
+  bare.fractions = false;
+  EXPECT_GT(readGridVoxels(file, bare).size(), 0u);
 }
 
 }  // namespace

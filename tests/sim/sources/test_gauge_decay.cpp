@@ -9,10 +9,10 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include "sim/sources/gauge_decay.hpp"
+#include "support/temp_dir_test.hpp"
 
 namespace fs = std::filesystem;
 
@@ -154,19 +154,13 @@ TEST(GaugeDecay, BadHistoriesAreRefused) {
   EXPECT_THROW(measureShockPulse({0.0, 1.0, 2.0}, {5.0, 5.0, 5.0}, 5.0), std::invalid_argument);
 }
 
-class GaugeCsv : public ::testing::Test {
+class GaugeCsv : public test::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("ejecta_gauge_decay_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   std::string write(const std::string& name, const std::string& text) {
     const fs::path path = dir_ / name;
     std::ofstream(path) << text;
     return path.string();
   }
-  fs::path dir_;
 };
 
 TEST_F(GaugeCsv, ReadsTheGaugeFormatAndMeasuresIt) {
