@@ -86,10 +86,10 @@ void readMaterials(const TableReader& root, Scene& scene) {
       r.check(m.gamma > 1.0, "gamma", "must exceed 1 (got " + formatQuantity(m.gamma, {}) + ")");
     }
     if (const std::optional<std::string> library = r.optString("library")) {
-      const auto& names = kind.libraryNames;
-      r.check(std::find(names.begin(), names.end(), *library) != names.end(), "library",
+      const auto& entries = kind.libraryNames;
+      r.check(std::find(entries.begin(), entries.end(), *library) != entries.end(), "library",
               "no " + m.eos + " library entry '" + *library + "'" +
-                  (names.empty() ? std::string(" (this eos has no library)") : "; known: " + joinList(names)));
+                  (entries.empty() ? std::string(" (this eos has no library)") : "; known: " + joinList(entries)));
       m.library = *library;
     }
     if (const toml::table* params = r.optTable("parameters")) {
