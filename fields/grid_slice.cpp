@@ -1,7 +1,6 @@
 // Slices and point samples of a grid file. The one translation unit of the sampler that
 // includes OpenVDB.
 #include "fields/grid_slice.hpp"
-#include "core/join.hpp"
 #include "fields/vdb_file.hpp"
 
 #include <openvdb/openvdb.h>
@@ -28,13 +27,6 @@ std::string metaString(const openvdb::MetaMap& m, const std::string& key) {
 }
 
 void openFile(openvdb::io::File& file, const std::string& path) { openGridFile(file, path); }
-
-void requireGrid(openvdb::io::File& file, const std::string& path, const std::string& name) {
-  if (file.hasGrid(name)) return;
-  std::vector<std::string> names;
-  for (auto it = file.beginName(); it != file.endName(); ++it) names.push_back(*it);
-  throw std::runtime_error(path + ": no grid named '" + name + "' (the file has: " + joinList(names) + ")");
-}
 
 // The header from a grid's metadata and transform (the tree need not be loaded); `box` is the
 // active voxels' index box when known.
@@ -262,8 +254,7 @@ GridHeader readGridHeader(const std::string& path, const std::string& grid) {
 std::vector<std::string> gridNames(const std::string& path) {
   openvdb::io::File file(path);
   openFile(file, path);
-  std::vector<std::string> names;
-  for (auto it = file.beginName(); it != file.endName(); ++it) names.push_back(*it);
+  std::vector<std::string> names = gridNamesIn(file);
   file.close();
   return names;
 }

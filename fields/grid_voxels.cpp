@@ -55,10 +55,8 @@ GridVoxels readGridVoxels(const std::string& path, const GridVoxelOptions& optio
     throw std::invalid_argument(path + ": the voxel threshold must be finite");
   openvdb::io::File file(path);
   openGridFile(file, path);
-  std::vector<std::string> names;
-  for (auto it = file.beginName(); it != file.endName(); ++it) names.push_back(*it);
-  if (!file.hasGrid(options.grid))
-    throw std::runtime_error(path + ": no grid named '" + options.grid + "' (the file has: " + joinList(names) + ")");
+  requireGrid(file, path, options.grid);
+  const std::vector<std::string> names = gridNamesIn(file);
   const openvdb::FloatGrid::Ptr grid = readFloat(file, path, options.grid);
   if (!grid->transform().isLinear() || !grid->hasUniformVoxels())
     throw std::runtime_error(path + ": grid '" + options.grid + "' does not have cubic voxels on a linear transform");
@@ -121,11 +119,12 @@ GridVoxels readGridVoxels(const std::string& path, const GridVoxelOptions& optio
       }
       // A fraction of a material the run did not have: the file was edited or put together from
       // two runs, and its fractions no longer describe one body. (No list: a file from before it.)
-      for (const std::string& m : out.materials)
-        if (count && std::find(listed.begin(), listed.end(), m) == listed.end())
-          throw std::runtime_error(path + ": grid 'fraction_" + m + "' is of a material the file's material list (" +
-                                   (listed.empty() ? std::string("empty") : joinList(listed)) +
-                                   ") does not have; was the file put together from two runs?");
+      if (count)
+        for (const std::string& m : out.materials)
+          if (std::find(listed.begin(), listed.end(), m) == listed.end())
+            throw std::runtime_error(path + ": grid 'fraction_" + m + "' is of a material the file's material list (" +
+                                     (listed.empty() ? std::string("empty") : joinList(listed)) +
+                                     ") does not have; was the file put together from two runs?");
     }
   }
   file.close();

@@ -1,7 +1,6 @@
 // Level set -> triangles with OpenVDB's volumeToMesh. The one translation unit of the surface
 // mesher that includes OpenVDB.
 #include "fields/surface_mesh.hpp"
-#include "core/join.hpp"
 #include "fields/vdb_file.hpp"
 
 #include <openvdb/openvdb.h>
@@ -28,11 +27,7 @@ double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 openvdb::FloatGrid::Ptr readFloatGrid(const std::string& path, const std::string& name) {
   openvdb::io::File file(path);
   openGridFile(file, path);
-  if (!file.hasGrid(name)) {
-    std::vector<std::string> names;
-    for (auto it = file.beginName(); it != file.endName(); ++it) names.push_back(*it);
-    throw std::runtime_error(path + ": no grid named '" + name + "' (the file has: " + joinList(names) + ")");
-  }
+  requireGrid(file, path, name);
   auto grid = openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid(name));
   file.close();
   if (!grid) throw std::runtime_error(path + ": grid '" + name + "' is not a float grid");

@@ -8,7 +8,9 @@
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
+#include "core/join.hpp"
 #include "fields/grid_file_seal.hpp"
 
 namespace ejecta::fields {
@@ -28,6 +30,19 @@ inline void openGridFile(openvdb::io::File& file, const std::string& path) {
   } catch (const openvdb::Exception& e) {
     throw std::runtime_error(path + ": not a readable OpenVDB file (" + e.what() + ")");
   }
+}
+
+// The names of an open file's grids, in the file's order.
+inline std::vector<std::string> gridNamesIn(openvdb::io::File& file) {
+  std::vector<std::string> names;
+  for (auto it = file.beginName(); it != file.endName(); ++it) names.push_back(*it);
+  return names;
+}
+
+// A missing grid named with the grids the file has, so a misspelt name is seen at once.
+inline void requireGrid(openvdb::io::File& file, const std::string& path, const std::string& name) {
+  if (file.hasGrid(name)) return;
+  throw std::runtime_error(path + ": no grid named '" + name + "' (the file has: " + joinList(gridNamesIn(file)) + ")");
 }
 
 }  // namespace ejecta::fields
