@@ -122,7 +122,8 @@ int craterCommand(const CraterArgs& args) {
     // The scene's [crater] scaling (fields/crater_scaling.hpp).
     const fields::ScaledCrater k = fields::scaleCrater(setup.scaling->law, setup.scaling->impact);
     std::printf("  %s\n",
-                fields::describeScaledCrater(setup.scaling->law.name, k, metrics.volume).c_str());
+                fields::describeScaledCrater(setup.scaling->law.name, k, metrics.volume,
+                                             metrics.apparentDiameter).c_str());
   }
   if (!metrics.note.empty()) std::printf("  note: %s\n", metrics.note.c_str());
   return 0;

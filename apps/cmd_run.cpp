@@ -115,9 +115,10 @@ void printSummary(const RunOutcome& r, const HookResults& hooks, const std::stri
     else if (!c->note.empty())
       std::printf("  crater: none measured (%s)\n", c->note.c_str());
     if (c->scaled)
-      std::printf("  %s\n", fields::describeScaledCrater(c->scalingClass, *c->scaled,
-                                                        c->found ? std::optional<double>(c->volume)
-                                                                 : std::nullopt).c_str());
+      std::printf("  %s\n",
+                  fields::describeScaledCrater(
+                      c->scalingClass, *c->scaled, c->found ? std::optional<double>(c->volume) : std::nullopt,
+                      c->found ? std::optional<double>(c->apparentDiameter) : std::nullopt).c_str());
   }
   // The Whipple shield's verdict (fields/shield_outputs.hpp) and the fragments.
   if (const auto& sh = hooks.shield) {

@@ -157,13 +157,15 @@ void addScaling(const Scene& scene, const BodySpec& impactor, CraterSetup& setup
     impact.gravity = 4.0 / 3.0 * std::numbers::pi * kGravitationalConstant *
                      setup.targetDensity * setup.surface.radius;
   }
+  CraterScalingLaw target = *law;
+  if (scene.crater.strength) target.strength = *scene.crater.strength;
   try {
-    scaleCrater(*law, impact);  // refused now, not after the run
+    scaleCrater(target, impact);  // refused now, not after the run
   } catch (const std::invalid_argument& e) {
     const bool noGravity = impact.gravity == 0.0 && !scene.crater.gravity;
     throw SceneError(where + e.what() + (noGravity ? "; give [crater] gravity" : ""));
   }
-  setup.scaling = CraterScaling{*law, impact};
+  setup.scaling = CraterScaling{target, impact};
 }
 
 // First hit of the ray c + t d (t > 0, |d| = 1) on an axis-aligned box's faces, as a plane.

@@ -20,7 +20,8 @@ CraterSummary craterSummary(const CraterMetrics& m, bool planar) {
 }
 
 std::string describeScaledCrater(const std::string& scalingClass, const ScaledCrater& k,
-                                 std::optional<double> measuredVolume) {
+                                 std::optional<double> measuredVolume,
+                                 std::optional<double> measuredDiameter) {
   char line[320];
   std::snprintf(line, sizeof line,
                 "pi-group scaling (%s, %s regime): volume %.4g m^3, diameter %.3g m, depth %.3g m",
@@ -29,6 +30,11 @@ std::string describeScaledCrater(const std::string& scalingClass, const ScaledCr
   std::string text = line;
   if (measuredVolume) {
     std::snprintf(line, sizeof line, "; the crater's volume is %.3g of it", *measuredVolume / k.volume);
+    text += line;
+  }
+  if (measuredDiameter) {
+    std::snprintf(line, sizeof line, "%s apparent diameter %.3g", measuredVolume ? ", its" : "; the crater's",
+                  *measuredDiameter / (2.0 * k.radius));
     text += line;
   }
   return text;
@@ -54,7 +60,10 @@ void addToSummary(const CraterSummary& c, RunSummary& s) {
     s.extras.push_back({"crater_scaled_volume_m3", k.volume});
     s.extras.push_back({"crater_scaled_diameter_m", 2.0 * k.radius});
     s.extras.push_back({"crater_scaled_depth_m", k.depth});
-    if (c.found) s.extras.push_back({"crater_volume_over_scaled", c.volume / k.volume});
+    if (c.found) {
+      s.extras.push_back({"crater_volume_over_scaled", c.volume / k.volume});
+      s.extras.push_back({"crater_diameter_over_scaled", c.apparentDiameter / (2.0 * k.radius)});
+    }
   }
   if (!c.found) return;
   s.extras.push_back({"crater_depth_m", c.depth});

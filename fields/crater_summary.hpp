@@ -29,9 +29,10 @@ struct CraterSummary {
 
 CraterSummary craterSummary(const CraterMetrics& metrics, bool planar);
 // The line `ejecta run` and `ejecta crater` print for [crater] scaling, with the measured
-// crater's volume over the scaled one when there is a crater.
+// crater's volume and apparent diameter over the scaled ones when there is a crater.
 std::string describeScaledCrater(const std::string& scalingClass, const ScaledCrater& scaled,
-                                 std::optional<double> measuredVolume);
+                                 std::optional<double> measuredVolume,
+                                 std::optional<double> measuredDiameter = std::nullopt);
 // A measurement that failed: no crater, and why.
 CraterSummary craterFailure(const std::string& why);
 

@@ -41,6 +41,7 @@ struct CraterAnalysisOptions {
   // The pi-group scaling class the crater is set beside (fields/crater_scaling.hpp); empty: none.
   std::string scaling;
   std::optional<double> gravity;        // [m/s^2] for the scaling; none: a uniform sphere's
+  std::optional<double> strength;       // [Pa] Y for the scaling; none: the class's
 };
 
 // [fragments]: fragment identification at the end of the run and at chosen outputs

@@ -90,6 +90,10 @@ void readCrater(const TableReader& root, Scene& scene) {
   if (c.gravity)
     r.check(*c.gravity >= 0.0, "gravity", nonNegativeMessage(*c.gravity, Dimension::Acceleration));
   r.check(!c.gravity || !c.scaling.empty(), "gravity", "is for the crater scaling: give `scaling` too");
+  c.strength = r.optQuantity("strength", Dimension::Pressure);
+  if (c.strength)
+    r.check(*c.strength >= 0.0, "strength", nonNegativeMessage(*c.strength, Dimension::Pressure));
+  r.check(!c.strength || !c.scaling.empty(), "strength", "is for the crater scaling: give `scaling` too");
   r.check(c.enabled || c.scaling.empty(), "scaling", "sets the measured crater beside the scaled "
                                                      "one: it needs enabled = true");
 }
