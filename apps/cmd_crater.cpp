@@ -56,6 +56,7 @@ nlohmann::ordered_json toJson(const fields::CraterMetrics& m, const fields::Crat
     const fields::ScaledCrater k = fields::scaleCrater(setup.scaling->law, setup.scaling->impact);
     j["scaling"] = {{"class", setup.scaling->law.name},
                     {"regime", k.strengthRegime ? "strength" : "gravity"},
+                    {"strength_pa", k.strength},
                     {"volume_m3", k.volume},
                     {"diameter_m", 2.0 * k.radius},
                     {"depth_m", k.depth}};

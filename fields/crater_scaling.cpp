@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 #include "core/join.hpp"
 
@@ -67,20 +69,22 @@ ScaledCrater scaleCrater(const CraterScalingLaw& law, const ScalingImpact& impac
   requirePositive(impact.speed, "impact speed");
   requirePositive(impact.targetDensity, "target's density");
   requirePositive(impact.gravity, "surface gravity", true);
-  if (impact.gravity == 0.0 && law.strength == 0.0)
-    throw std::invalid_argument("class '" + law.name +
-                                "' has no strength, so only gravity stops its crater; the "
-                                "surface gravity is 0");
+  requirePositive(law.strength, "strength", true);
   if (law.radiusForm() && law.h2 == 0.0 && law.strength > 0.0)
     throw std::invalid_argument("class '" + law.name + "' is fitted in the gravity regime only (no "
                                 "H2): it takes no strength");
   if (law.radiusForm() && law.h1 == 0.0 && law.strength == 0.0)
     throw std::invalid_argument("class '" + law.name + "' is fitted in the strength regime only (no "
                                 "H1): its strength must be > 0");
+  if (impact.gravity == 0.0 && law.strength == 0.0)
+    throw std::invalid_argument("class '" + law.name +
+                                "' has no strength, so only gravity stops its crater; the "
+                                "surface gravity is 0");
   ScaledCrater c;
   const double u2 = impact.speed * impact.speed;
   const double mu = law.mu;
   c.pi2 = impact.gravity * impact.impactorRadius / u2;
+  c.strength = law.strength;
   c.pi3 = law.strength / (impact.targetDensity * u2);
   if (law.radiusForm()) {
     const double a = impact.impactorRadius;
@@ -89,7 +93,8 @@ ScaledCrater scaleCrater(const CraterScalingLaw& law, const ScalingImpact& impac
     const double size = std::cbrt(impact.impactorMass / impact.targetDensity);
     // A class fitted in one regime only has the other's radius infinite (the checks above have
     // made sure the regime it has is in play).
-    double gravityRadius = INFINITY, strengthRadius = INFINITY;
+    constexpr double kNone = std::numeric_limits<double>::infinity();
+    double gravityRadius = kNone, strengthRadius = kNone;
     if (law.h1 > 0.0 && c.pi2 > 0.0)
       gravityRadius = law.h1 * size *
                       std::pow(densityRatio, (2.0 + mu - 6.0 * law.nu) / (3.0 * (2.0 + mu))) *
@@ -109,6 +114,10 @@ ScaledCrater scaleCrater(const CraterScalingLaw& law, const ScalingImpact& impac
     c.radius = law.radiusFactor * std::cbrt(c.volume);
   }
   c.depth = 2.0 * c.volume / (std::numbers::pi * c.radius * c.radius);
+  // A strength or gravity so small that the crater overflows (1e-300 Pa): no answer to give.
+  if (!std::isfinite(c.depth) || !(c.volume > 0.0))
+    throw std::invalid_argument("the scaled crater is not finite (pi_2 = " + std::to_string(c.pi2) +
+                                ", pi_3 = " + std::to_string(c.pi3) + ")");
   return c;
 }
 

@@ -14,8 +14,8 @@
 // porous: the hh2011_ classes), with delta the impactor's density:
 //   gravity:  R (rho/m)^(1/3) = H1 (rho/delta)^((2 + mu - 6 nu) / (3 (2 + mu))) pi_2^(-mu/(2 + mu))
 //   strength: R (rho/m)^(1/3) = H2 (rho/delta)^((1 - 3 nu) / 3) pi_3^(-mu/2)
-// the smaller of the two where a class has both (the one that stops the crater first); its volume
-// is taken from R by the same K_r rule, V = (R / K_r)^3.
+// each class fitted in one of the two (were a class fitted in both, the smaller radius: the regime
+// that stops the crater first); its volume is taken from R by the same K_r rule, V = (R / K_r)^3.
 //
 // The depth given in both is that of a paraboloid bowl of that volume and radius,
 // d = 2 V / (pi R^2) (neither source gives a depth rule).
@@ -60,6 +60,7 @@ struct ScalingImpact {
 
 struct ScaledCrater {
   double pi2 = 0.0, pi3 = 0.0, piV = 0.0;
+  double strength = 0.0;  // the Y in pi_3 [Pa]: the class's, or the scene's [crater] strength
   double volume = 0.0;  // [m^3], below the original surface
   double radius = 0.0;  // [m], at the original surface
   double depth = 0.0;   // [m], of the paraboloid of that volume and radius

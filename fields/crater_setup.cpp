@@ -162,8 +162,11 @@ void addScaling(const Scene& scene, const BodySpec& impactor, CraterSetup& setup
   try {
     scaleCrater(target, impact);  // refused now, not after the run
   } catch (const std::invalid_argument& e) {
-    const bool noGravity = impact.gravity == 0.0 && !scene.crater.gravity;
-    throw SceneError(where + e.what() + (noGravity ? "; give [crater] gravity" : ""));
+    // Gravity helps only a class that has a gravity regime.
+    const bool gravityWouldDo = impact.gravity == 0.0 && !scene.crater.gravity &&
+                                (!law->radiusForm() || law->h1 > 0.0);
+    throw SceneError(where + (scene.crater.strength ? "with crater.strength: " : "") + e.what() +
+                     (gravityWouldDo ? "; give [crater] gravity" : ""));
   }
   setup.scaling = CraterScaling{target, impact};
 }

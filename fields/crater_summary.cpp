@@ -57,6 +57,7 @@ void addToSummary(const CraterSummary& c, RunSummary& s) {
     const ScaledCrater& k = *c.scaled;
     s.extras.push_back({"crater_scaling_class", c.scalingClass});
     s.extras.push_back({"crater_scaling_regime", std::string(k.strengthRegime ? "strength" : "gravity")});
+    s.extras.push_back({"crater_scaling_strength_pa", k.strength});
     s.extras.push_back({"crater_scaled_volume_m3", k.volume});
     s.extras.push_back({"crater_scaled_diameter_m", 2.0 * k.radius});
     s.extras.push_back({"crater_scaled_depth_m", k.depth});

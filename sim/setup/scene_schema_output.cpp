@@ -35,7 +35,7 @@ std::vector<SceneTable> outputTables() {
              "set the crater beside pi-group scaling for this class of target: water, dry_sand, "
              "dry_soil, wet_soil, soft_rock, hard_rock, hh2011_sand, hh2011_glass_spheres, "
              "hh2011_sand_fly_ash, hh2011_perlite_sand (Holsapple 1993; the hh2011_ classes: "
-             "Housen & Holsapple 2011, targets 35-60% porous; docs/crater.md)"),
+             "Housen & Holsapple 2011's porous targets; docs/crater.md)"),
         quantity("gravity", Dimension::Acceleration, "a uniform sphere's",
                  "surface gravity for the scaling; default on a sphere (4/3) pi G rho R, on a "
                  "plane 0"),
