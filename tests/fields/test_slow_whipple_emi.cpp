@@ -1,9 +1,9 @@
-// The four gas-gun shots of the seed's Table 5.3 at the shipped scenes' resolution, 0.2 mm (8
-// particles through the bumper, 16 through the wall; label `slow`: about half an hour on 2
-// cores). The verification test runs them at 0.4 mm (test_verify_whipple_emi.cpp); both must give
+// The four gas-gun shots of the seed's Table 5.3 as shipped: 0.2 mm (8 particles through the
+// bumper, 16 through the wall) and Courant factor 0.15 (label `slow`: about an hour on 2 cores).
+// The verification test runs them at 0.4 mm (test_verify_whipple_emi.cpp); both must give
 // the experiment's verdicts for EMI 20.1, 21.0 and 71.0 (NP, NP, P) and the ballistic-limit
 // equations' for EMI 19.0 (P, where the seed's table's NP is in doubt; there, and docs/whipple.md).
-// At 0.2 mm EMI 19.0 perforates with the default step (a 1.3 mm hole).
+// At 0.2 mm EMI 19.0 perforates at Courant 0.15 (a 2.1 mm hole) and 0.3 (1.3 mm).
 #include <gtest/gtest.h>
 
 #include "support/whipple_shots.hpp"
