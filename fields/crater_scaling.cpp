@@ -115,9 +115,11 @@ ScaledCrater scaleCrater(const CraterScalingLaw& law, const ScalingImpact& impac
   }
   c.depth = 2.0 * c.volume / (std::numbers::pi * c.radius * c.radius);
   // A strength or gravity so small that the crater overflows (1e-300 Pa): no answer to give.
-  if (!std::isfinite(c.depth) || !(c.volume > 0.0))
-    throw std::invalid_argument("the scaled crater is not finite (pi_2 = " + std::to_string(c.pi2) +
-                                ", pi_3 = " + std::to_string(c.pi3) + ")");
+  if (!std::isfinite(c.depth) || !(c.volume > 0.0)) {
+    char groups[96];  // %g: pi_3 of 1e-300 Pa prints as such, not as 0.000000
+    std::snprintf(groups, sizeof groups, "pi_2 = %.3g, pi_3 = %.3g", c.pi2, c.pi3);
+    throw std::invalid_argument(std::string("the scaled crater is not finite (") + groups + ")");
+  }
   return c;
 }
 

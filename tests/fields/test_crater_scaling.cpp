@@ -244,7 +244,16 @@ TEST(CraterScaling, RefusesWhatCannotBeScaled) {
   // A strength so small the crater overflows: refused, not an infinite crater.
   CraterScalingLaw feeble = law("hard_rock");
   feeble.strength = 1e-300;
-  EXPECT_THROW(scaleCrater(feeble, impactRz(0.0)), std::invalid_argument);
+  try {
+    scaleCrater(feeble, impactRz(0.0));
+    ADD_FAILURE() << "an overflowing crater was not refused";
+  } catch (const std::invalid_argument& e) {
+    // pi_3 ~ 1e-300 / (rho U^2) is printed as a number, not rounded to 0.000000.
+    const std::string what = e.what();
+    EXPECT_NE(what.find("pi_3 = "), std::string::npos) << what;
+    EXPECT_NE(what.find("e-3"), std::string::npos) << what;
+    EXPECT_EQ(what.find("0.000000"), std::string::npos) << what;
+  }
 }
 
 std::string impactScene(const std::string& dimension, const std::string& extra) {
@@ -335,6 +344,12 @@ TEST(CraterScalingScene, TheSummaryKeepsTheScaledCraterWhenNoneWasMeasured) {
   EXPECT_FALSE(s.has("crater_diameter_over_scaled"));
   EXPECT_NE(describeScaledCrater("hard_rock", *c.scaled, std::nullopt).find("volume 2527 m^3"),
             std::string::npos);
+  // A measured crater is put against it: the volume's ratio, then the apparent diameter's.
+  const ScaledCrater& k = *c.scaled;
+  const std::string both = describeScaledCrater("hard_rock", k, 0.5 * k.volume, 0.8 * 2.0 * k.radius);
+  EXPECT_NE(both.find("; the crater's volume is 0.5 of it, its apparent diameter 0.8"), std::string::npos) << both;
+  const std::string diameter = describeScaledCrater("hard_rock", k, std::nullopt, 1.25 * 2.0 * k.radius);
+  EXPECT_NE(diameter.find("; the crater's apparent diameter 1.25"), std::string::npos) << diameter;
 }
 
 TEST(CraterScalingScene, TheRunsSummaryHoldsTheScaledCrater) {
