@@ -20,9 +20,10 @@ namespace ejecta::app {
 
 namespace {
 
-// <quantity>.png: the value against the spacing (the extrapolated value solid, the finest value's
-// GCI band dotted)
-// and <quantity>_cost.png against the wall time. Returns why not, or "".
+// <quantity>.png: the value against the spacing, with the finest value's band dotted and, where
+// the levels are in the asymptotic range, the extrapolated value solid (an extrapolation from an
+// order out of range or from oscillating changes claims nothing, so none is drawn); and
+// <quantity>_cost.png against the wall time. Returns why not, or "".
 std::string drawCharts(const fs::path& out, const coupling::ConvergenceResult& r) {
   render::ChartRunner charts;
   if (!charts.chartsAvailable()) return charts.unavailableReason();
@@ -30,12 +31,16 @@ std::string drawCharts(const fs::path& out, const coupling::ConvergenceResult& r
     for (const coupling::QuantityConvergence& q : r.quantities) {
       std::vector<render::ChartLine> lines;
       const verify::GridConvergence& g = q.convergence;
-      if (g.valid) {
-        char label[64];
+      char label[96];
+      if (g.asymptotic) {
         std::snprintf(label, sizeof label, "extrapolated (Richardson, p = %.2f)", g.order);
         lines.push_back({g.extrapolated, label, render::LineStyle::Solid});
+      }
+      if (g.basis != verify::UncertaintyBasis::None) {
         const double fine = r.levels.back().values.at(q.name);
-        lines.push_back({fine + g.uncertainty, "finest value +- GCI band", render::LineStyle::Dotted});
+        std::snprintf(label, sizeof label, "finest value +- fallback band (p = %.3g, FS 3)", g.bandOrder);
+        lines.push_back({fine + g.uncertainty, g.asymptotic ? "finest value +- GCI band" : label,
+                         render::LineStyle::Dotted});
         lines.push_back({fine - g.uncertainty, "", render::LineStyle::Dotted});
       }
       charts.writeChart({.csv = out / "levels.csv", .x = "spacing_m",
@@ -67,6 +72,7 @@ int convergeCommand(const ConvergeArgs& args) {
   o.scaledKeys = args.keys;
   o.overrides = args.overrides;
   o.threads = args.threads;
+  o.formalOrder = args.formalOrder;
   const std::string name = problem ? args.scene.substr(verifyPrefix.size()) : "";
   const SceneText scene = problem ? SceneText{} : readSceneArgument(args.scene);
   const std::string sceneName = problem ? name : parseScene(scene.text, scene.label, args.overrides).name;
@@ -89,13 +95,18 @@ int convergeCommand(const ConvergeArgs& args) {
                               {"wall_seconds", l.wallSeconds}, {"values", l.values}});
   for (const coupling::QuantityConvergence& q : r.quantities) {
     const verify::GridConvergence& g = q.convergence;
-    nlohmann::ordered_json j{{"quantity", q.name}, {"finest", r.levels.back().values.at(q.name)}, {"valid", g.valid}};
+    nlohmann::ordered_json j{{"quantity", q.name}, {"finest", r.levels.back().values.at(q.name)}, {"valid", g.valid},
+                             {"asymptotic", g.asymptotic}, {"formal_order", g.formalOrder}};
     if (g.valid) {
       j["observed_order"] = g.order;
-      j["extrapolated"] = g.extrapolated;
+      j["oscillatory"] = g.oscillatory;
+    }
+    if (g.asymptotic) j["extrapolated"] = g.extrapolated;  // claimed only there
+    j["uncertainty_basis"] = verify::uncertaintyBasisName(g.basis);
+    if (g.basis != verify::UncertaintyBasis::None) {
+      j["band_order"] = g.bandOrder;
       j["gci"] = g.gci;
       j["uncertainty"] = g.uncertainty;
-      j["oscillatory"] = g.oscillatory;
     }
     if (!g.note.empty()) j["note"] = g.note;
     json["quantities"].push_back(j);
@@ -110,12 +121,18 @@ int convergeCommand(const ConvergeArgs& args) {
   for (const coupling::QuantityConvergence& q : r.quantities) {
     const verify::GridConvergence& g = q.convergence;
     const double fine = r.levels.back().values.at(q.name);
-    if (g.valid)
+    char order[48] = "";
+    if (g.valid) std::snprintf(order, sizeof order, "observed order %.3g: ", g.order);
+    const std::string note = g.note.empty() ? "" : "; " + std::string(order) + g.note;
+    if (g.asymptotic)
       // Celik et al. (2008): the GCI band is the finest solution's uncertainty, so it is printed
       // about the finest value; the extrapolation is the estimate it brackets.
-      std::printf("  %s: finest %.6g +- %.3g (GCI %.3g%%), extrapolated %.6g, observed order %.3g%s\n", q.name.c_str(),
-                  fine, g.uncertainty, 100 * g.gci, g.extrapolated, g.order,
-                  g.note.empty() ? "" : (" (" + g.note + ")").c_str());
+      std::printf("  %s: finest %.6g +- %.3g (GCI %.3g%%), extrapolated %.6g, observed order %.3g\n", q.name.c_str(),
+                  fine, g.uncertainty, 100 * g.gci, g.extrapolated, g.order);
+    else if (g.basis == verify::UncertaintyBasis::FormalFallback)
+      // Not in the asymptotic range: no extrapolation is claimed, only Roache's wider band.
+      std::printf("  %s: finest %.6g +- %.3g (%.3g%%: the fallback band, order %.3g, factor of safety 3)%s\n",
+                  q.name.c_str(), fine, g.uncertainty, 100 * g.gci, g.bandOrder, note.c_str());
     else
       std::printf("  %s: finest %.6g; %s\n", q.name.c_str(), fine, g.note.c_str());
   }

@@ -162,6 +162,7 @@ struct ConvergeArgs {
   std::vector<std::string> overrides;  // --set, every level
   std::string outDir;                  // default runs/<scene name>_converge
   int threads = 0;
+  double formalOrder = 1.0;            // the fallback band's order (grid_convergence.hpp)
   bool charts = true;
 };
 int convergeCommand(const ConvergeArgs& args);

@@ -264,6 +264,11 @@ int main(int argc, char** argv) {
   convergeCmd->add_option("--set", convergeArgs.overrides, "Override a scene key at every level")->take_all();
   convergeCmd->add_option("--out,-o", convergeArgs.outDir, "Output directory (default runs/<scene name>_converge)");
   convergeCmd->add_option("--threads,-j", convergeArgs.threads, "OpenMP threads")->check(countPerCore("--threads"));
+  convergeCmd
+      ->add_option("--formal-order", convergeArgs.formalOrder,
+                   "The method's order for the quantities: 1 across shocks (default), 2 for smooth flow. An observed "
+                   "order above twice it or below 0.5, none, or oscillating changes: the fallback band")
+      ->check(CLI::Range(0.25, 8.0));
   convergeCmd->add_flag("!--no-charts", convergeArgs.charts, "Write the CSVs but draw no charts");
 
   ejecta::app::FragmentsArgs fragmentsArgs;

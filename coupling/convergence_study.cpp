@@ -85,16 +85,17 @@ double quantityOf(const nlohmann::json& summary, const std::string& name, const 
                            "'; its numbers: energy_relative_error, wall_seconds, particles, steps, " + known);
 }
 
-void analyse(ConvergenceResult& result, const std::vector<std::string>& quantities) {
-  for (const std::string& q : quantities) {
+void analyse(ConvergenceResult& result, const ConvergenceOptions& o) {
+  for (const std::string& q : o.quantities) {
     QuantityConvergence qc;
     qc.name = q;
     if (result.levels.size() < 3) {
+      qc.convergence.formalOrder = o.formalOrder;
       qc.convergence.note = "fewer than three levels: no order or extrapolation";
     } else {
       std::vector<double> h, v;
       for (const ConvergenceLevel& l : result.levels) h.push_back(l.spacing), v.push_back(l.values.at(q));
-      qc.convergence = verify::gridConvergence(h, v);
+      qc.convergence = verify::gridConvergence(h, v, o.formalOrder);
     }
     result.quantities.push_back(std::move(qc));
   }
@@ -103,6 +104,9 @@ void analyse(ConvergenceResult& result, const std::vector<std::string>& quantiti
 std::vector<double> checkedFactors(const ConvergenceOptions& o) {
   if (o.factors.empty()) throw std::invalid_argument("converge: no --factors");
   if (o.quantities.empty()) throw std::invalid_argument("converge: no --quantity");
+  // Checked before any level runs, not when the levels are analysed.
+  if (!(o.formalOrder > 0.0) || !std::isfinite(o.formalOrder))
+    throw std::invalid_argument("converge: the formal order must be a positive number");
   std::vector<double> factors = o.factors;
   std::sort(factors.begin(), factors.end(), std::greater<>());
   for (std::size_t k = 0; k < factors.size(); ++k) {
@@ -183,7 +187,7 @@ ConvergenceResult runConvergenceStudy(const std::string& sceneText, const std::s
     if (o.onLevel) o.onLevel(factor, level.particles, seconds);
     result.levels.push_back(std::move(level));
   }
-  analyse(result, o.quantities);
+  analyse(result, o);
   return result;
 }
 
@@ -215,7 +219,7 @@ ConvergenceResult runVerificationConvergence(const std::string& problem, const C
     }
     result.levels.push_back(std::move(level));
   }
-  analyse(result, o.quantities);
+  analyse(result, o);
   return result;
 }
 
@@ -233,13 +237,21 @@ std::string levelsCsv(const ConvergenceResult& r) {
 
 std::string convergenceCsv(const ConvergenceResult& r) {
   CsvWriter csv({"quantity", "finest", "observed_order", "extrapolated", "gci", "uncertainty",
-                 "oscillatory", "note"});
+                 "uncertainty_basis", "band_order", "asymptotic", "oscillatory", "note"});
   for (const QuantityConvergence& q : r.quantities) {
     const verify::GridConvergence& g = q.convergence;
     csv.text(q.name).number(r.levels.back().values.at(q.name));
-    if (g.valid) csv.number(g.order).number(g.extrapolated).number(g.gci).number(g.uncertainty);
-    else csv.text("").text("").text("").text("");
-    csv.flag(g.oscillatory).quoted(g.note).endRow();
+    // The extrapolation only where it is claimed (the levels in the asymptotic range).
+    if (g.valid) csv.number(g.order);
+    else csv.text("");
+    if (g.asymptotic) csv.number(g.extrapolated);
+    else csv.text("");
+    if (g.basis != verify::UncertaintyBasis::None) csv.number(g.gci).number(g.uncertainty);
+    else csv.text("").text("");
+    csv.text(verify::uncertaintyBasisName(g.basis));
+    if (g.basis != verify::UncertaintyBasis::None) csv.number(g.bandOrder);
+    else csv.text("");
+    csv.flag(g.asymptotic).flag(g.oscillatory).quoted(g.note).endRow();
   }
   return csv.str();
 }

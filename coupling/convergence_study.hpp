@@ -21,14 +21,17 @@
 namespace ejecta::coupling {
 
 struct ConvergenceOptions {
-  std::vector<double> factors;           // spacing multipliers, e.g. 1, 0.7, 0.5 (any order)
-  std::vector<std::string> quantities;   // summary keys: an extras key, or "energy_relative_error"
-  std::vector<std::string> scaledKeys;   // more scene keys scaled with the spacing
-  std::vector<std::string> overrides;    // --set, every level
-  std::filesystem::path outDir;
+  std::vector<double> factors{};         // spacing multipliers, e.g. 1, 0.7, 0.5 (any order)
+  std::vector<std::string> quantities{}; // summary keys: an extras key, or "energy_relative_error"
+  std::vector<std::string> scaledKeys{}; // more scene keys scaled with the spacing
+  std::vector<std::string> overrides{};  // --set, every level
+  std::filesystem::path outDir{};
   int threads = 0;
+  // The method's order for the quantities (1: SPH across shocks; 2: smooth flow): where the
+  // levels are not in the asymptotic range the band falls back to it (grid_convergence.hpp).
+  double formalOrder = 1.0;
   // Told of each level as it ends (factor, particles, seconds; read back: seconds < 0).
-  std::function<void(double, std::size_t, double)> onLevel;
+  std::function<void(double, std::size_t, double)> onLevel{};
 };
 
 struct ConvergenceLevel {
@@ -71,7 +74,8 @@ ConvergenceResult runVerificationConvergence(const std::string& problem, const C
 
 // levels.csv: factor, spacing, particles, wall seconds, one column per quantity.
 std::string levelsCsv(const ConvergenceResult& result);
-// convergence.csv: per quantity, the finest value, order, extrapolated value, GCI, band.
+// convergence.csv: per quantity, the finest value, order, extrapolated value, GCI, band and
+// the band's basis.
 std::string convergenceCsv(const ConvergenceResult& result);
 
 }  // namespace ejecta::coupling

@@ -2,16 +2,42 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <stdexcept>
 
 namespace ejecta::verify {
 
-GridConvergence gridConvergence(std::vector<double> spacings, std::vector<double> values) {
+namespace {
+
+// Roache's fallback band (grid_convergence.hpp): factor of safety 3 at the formal order, or at
+// the observed order where a monotone sequence converges more slowly; where the changes
+// alternate, at least half the spread of the three levels.
+// The band relative to |phi1|, or absolute where phi1 = 0.
+double bandScale(double f1) { return f1 != 0.0 ? std::abs(f1) : 1.0; }
+
+void fallbackBand(GridConvergence& g, double r21, double f1, double f2, double f3) {
+  const bool slower = g.valid && !g.oscillatory && g.order < g.formalOrder;
+  g.bandOrder = slower ? g.order : g.formalOrder;
+  g.basis = UncertaintyBasis::FormalFallback;
+  const double scale = bandScale(f1);
+  g.gci = 3.0 * g.relativeChange / (std::pow(r21, g.bandOrder) - 1.0);
+  if (g.oscillatory) {
+    const double halfSpread = 0.5 * (std::max({f1, f2, f3}) - std::min({f1, f2, f3}));
+    g.gci = std::max(g.gci, halfSpread / scale);
+  }
+  g.uncertainty = g.gci * scale;
+}
+
+}  // namespace
+
+GridConvergence gridConvergence(std::vector<double> spacings, std::vector<double> values, double formalOrder) {
   if (spacings.size() != values.size())
     throw std::invalid_argument("grid convergence: as many spacings as values are needed");
   if (spacings.size() < 3)
     throw std::invalid_argument("grid convergence: at least three resolutions are needed for an order");
+  if (!(formalOrder > 0.0) || !std::isfinite(formalOrder))
+    throw std::invalid_argument("grid convergence: the formal order must be positive");
   std::vector<std::size_t> order(spacings.size());
   std::iota(order.begin(), order.end(), 0u);
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return spacings[a] < spacings[b]; });
@@ -24,15 +50,21 @@ GridConvergence gridConvergence(std::vector<double> spacings, std::vector<double
   const double h1 = spacings[order[0]], h2 = spacings[order[1]], h3 = spacings[order[2]];
   const double f1 = values[order[0]], f2 = values[order[1]], f3 = values[order[2]];
   GridConvergence g;
+  g.formalOrder = formalOrder;
+  if (!std::isfinite(f1) || !std::isfinite(f2) || !std::isfinite(f3)) {
+    g.note = "a value is not finite: no order and no band";
+    return g;
+  }
   const double e21 = f2 - f1, e32 = f3 - f2;
   const double r21 = h2 / h1, r32 = h3 / h2;
-  g.relativeChange = f1 != 0.0 ? std::abs(e21 / f1) : std::abs(e21);
+  g.relativeChange = std::abs(e21) / bandScale(f1);
   if (e21 == 0.0) {
     g.note = "the two finest values are equal: no order (converged to the output's precision, or insensitive)";
     return g;
   }
   if (e32 == 0.0) {
     g.note = "the two coarsest values are equal: no order";
+    fallbackBand(g, r21, f1, f2, f3);
     return g;
   }
   const double s = e32 / e21 > 0.0 ? 1.0 : -1.0;
@@ -53,6 +85,7 @@ GridConvergence gridConvergence(std::vector<double> spacings, std::vector<double
   }
   if (!settled || !std::isfinite(p) || p <= 0.0) {
     g.note = "the observed order does not settle (the three values do not follow a power of h)";
+    fallbackBand(g, r21, f1, f2, f3);
     return g;
   }
   g.valid = true;
@@ -60,12 +93,35 @@ GridConvergence gridConvergence(std::vector<double> spacings, std::vector<double
   const double rp = std::pow(r21, p);
   g.extrapolated = (rp * f1 - f2) / (rp - 1.0);
   g.extrapolatedError = g.extrapolated != 0.0 ? std::abs((g.extrapolated - f1) / g.extrapolated) : 0.0;
+  if (g.oscillatory) {
+    g.note = "oscillatory convergence (the changes alternate in sign)";
+  } else if (p > 2.0 * formalOrder) {
+    char limit[160];
+    std::snprintf(limit, sizeof limit, "the observed order is above %.3g (twice the formal order): "
+                  "the finest levels may not be in the asymptotic range", 2.0 * formalOrder);
+    g.note = limit;
+  } else if (p < 0.5) {
+    g.note = "the observed order is below 0.5: the resolutions are not in the asymptotic range";
+  }
+  g.asymptotic = g.note.empty();
+  if (!g.asymptotic) {
+    fallbackBand(g, r21, f1, f2, f3);
+    return g;
+  }
+  g.basis = UncertaintyBasis::ObservedOrder;
+  g.bandOrder = p;
   g.gci = 1.25 * g.relativeChange / (rp - 1.0);
-  g.uncertainty = g.gci * (f1 != 0.0 ? std::abs(f1) : 1.0);
-  if (g.oscillatory) g.note = "oscillatory convergence (the changes alternate in sign)";
-  else if (p > 4.0) g.note = "the observed order is above 4: the finest levels may not be in the asymptotic range";
-  else if (p < 0.5) g.note = "the observed order is below 0.5: the resolutions are not in the asymptotic range";
+  g.uncertainty = g.gci * bandScale(f1);
   return g;
+}
+
+const char* uncertaintyBasisName(UncertaintyBasis basis) {
+  switch (basis) {
+    case UncertaintyBasis::ObservedOrder: return "observed order";
+    case UncertaintyBasis::FormalFallback: return "formal-order fallback";
+    case UncertaintyBasis::None: break;
+  }
+  return "none";
 }
 
 }  // namespace ejecta::verify

@@ -11,28 +11,51 @@
 //   p = |ln|e32 / e21| + q(p)| / ln r21,  q(p) = ln((r21^p - s) / (r32^p - s))  (fixed point);
 //   phi_ext = (r21^p phi1 - phi2) / (r21^p - 1);
 //   GCI_fine = 1.25 |(phi1 - phi2) / phi1| / (r21^p - 1)  (the factor 1.25 for three grids).
-// s < 0 is oscillatory convergence: the procedure still applies but the result is flagged.
-#include <optional>
+//
+// The factor 1.25 is for levels in the asymptotic range. Where they are not (the changes
+// alternate in sign, the order does not settle or cannot be found from two equal coarse values,
+// or it is below 0.5 or above twice the method's formal order, faster than the scheme's
+// truncation error can fall) the band is Roache's
+// fallback (P. J. Roache 2011, J. Fluids Eng. 133, 115501: "if p_RE is unreasonable one at least
+// reverts to using p_th and FS = 3"): GCI = 3 |(phi1 - phi2) / phi1| / (r21^p - 1) with the
+// formal order, or the observed one where that is lower (a slower convergence is not sped up);
+// and where the changes alternate, at least half the spread of the three levels (Stern, Wilson,
+// Coleman & Paterson 2001, J. Fluids Eng. 123, 793: the oscillation's half amplitude).
 #include <string>
 #include <vector>
 
 namespace ejecta::verify {
 
+enum class UncertaintyBasis {
+  None,            // no band: the two finest values are equal, or a value is not finite
+  ObservedOrder,   // Celik et al.: the observed order, factor of safety 1.25
+  FormalFallback,  // Roache's fallback: the formal (or a lower observed) order, factor of safety 3
+};
+
 struct GridConvergence {
   bool valid = false;                 // an order was found (needs 3 levels and e21 != 0)
   std::string note;                   // why not, or a remark (oscillatory, order out of range)
   double order = 0.0;                 // observed order p
-  double extrapolated = 0.0;          // phi_ext from the two finest
+  double extrapolated = 0.0;          // phi_ext from the two finest (meaningful when asymptotic)
   double relativeChange = 0.0;        // |(phi1 - phi2) / phi1|
   double extrapolatedError = 0.0;     // |(phi_ext - phi1) / phi_ext|
-  double gci = 0.0;                   // GCI_fine, relative to |phi1|
+  double gci = 0.0;                   // the band relative to |phi1| (by `basis`)
   double uncertainty = 0.0;           // gci |phi1|: the band on the finest value
   bool oscillatory = false;           // s < 0
+  bool asymptotic = false;            // monotone, the order settled and within [0.5, 2 p_formal]
+  double formalOrder = 1.0;           // the method's order the check and the fallback use
+  double bandOrder = 0.0;             // the order the band was computed with
+  UncertaintyBasis basis = UncertaintyBasis::None;
 };
 
 // `spacings` and `values` in any order of resolution (at least 3 pairs; with more, the three
-// finest are used). Throws std::invalid_argument for mismatched sizes, fewer than three levels,
-// non-positive or repeated spacings.
-GridConvergence gridConvergence(std::vector<double> spacings, std::vector<double> values);
+// finest are used). `formalOrder`: the method's order for the quantity (1 for SPH across shocks,
+// the default; 2 for smooth flow). Throws std::invalid_argument for mismatched sizes, fewer
+// than three levels, non-positive or repeated spacings, or a non-positive formal order.
+GridConvergence gridConvergence(std::vector<double> spacings, std::vector<double> values,
+                                double formalOrder = 1.0);
+
+// "observed order" / "formal-order fallback" / "none": for outputs.
+const char* uncertaintyBasisName(UncertaintyBasis basis);
 
 }  // namespace ejecta::verify

@@ -68,7 +68,16 @@ TEST(ConvergenceStudy, RunsCoarsestFirstAndReadsBackWhatIsDone) {
   const std::string csv = levelsCsv(r);
   EXPECT_NE(csv.find("factor,spacing_m,particles,wall_seconds,gauge_mid_arrival_s,energy_relative_error"),
             std::string::npos);
-  EXPECT_NE(convergenceCsv(r).find("quantity,finest,observed_order"), std::string::npos);
+  // Each quantity's row says what its band rests on (bench/headline.py reads the same names).
+  const std::string table = convergenceCsv(r);
+  EXPECT_NE(table.find("quantity,finest,observed_order,extrapolated,gci,uncertainty,uncertainty_basis,band_order,"
+                       "asymptotic,oscillatory,note"),
+            std::string::npos);
+  for (const QuantityConvergence& q : r.quantities)
+    EXPECT_NE(table.find(q.name + ","), std::string::npos);
+  EXPECT_THROW(runConvergenceStudy(sodWithGauge(), "sod.toml", {.factors = {1.0}, .quantities = {"x"},
+                                                                 .formalOrder = -1.0}),
+               std::invalid_argument);
   // Again: nothing runs.
   ran = 0;
   const ConvergenceResult again = runConvergenceStudy(sodWithGauge(), "sod.toml", o);

@@ -89,6 +89,24 @@ def test_rows_from_a_study_that_ran(tmp_path):
     assert rows[4] == "| end of growth | — | — | — | the crater does not stop | | |"
 
 
+def test_a_flagged_result_quotes_the_fallback_band(tmp_path):
+    # ejecta converge's Roache fallback (an order out of range or oscillating changes: the formal
+    # order, factor of safety 3) is the band the row quotes, with the spread, and still no
+    # extrapolation; a convergence.json from before the fallback (no basis) gives the spread only.
+    manifest = headline.load_manifest(write_manifest(tmp_path / "m.toml", STUDY))
+    fake_study(tmp_path / "out", manifest["study"][0], [
+        {"quantity": "crater_depth_m", "finest": 7.707, "valid": True, "observed_order": 6.4,
+         "extrapolated": 7.69, "asymptotic": False, "uncertainty_basis": "formal-order fallback",
+         "band_order": 1.0, "gci": 0.05, "uncertainty": 0.386, "note": "the observed order is above 2"},
+        {"quantity": "target_share_of_impactor_energy", "finest": 0.9204, "valid": False, "note": "x"}])
+    rows = headline.table(manifest, str(tmp_path / "out")).splitlines()
+    assert rows[2].startswith("| crater depth | 7.71 m ± 0.386 m (fallback band, order 1, factor of safety 3; "
+                              "not settled: 7.71 m to 8.41 m over the three finest) | — | 6.40 | "
+                              "the observed order is above 2 |"), rows[2]
+    assert rows[3].startswith("| share | 92.0% (not settled: 90.7% to 91.4% over the three finest) | — | — |"), \
+        rows[3]
+
+
 def test_a_study_not_run_says_how_to_run_it(tmp_path):
     manifest = headline.load_manifest(write_manifest(tmp_path / "m.toml", STUDY))
     text = headline.table(manifest, str(tmp_path / "nothing"))

@@ -23,13 +23,18 @@ TEST(GridConvergence, ReproducesCelikEtAl2008TableOne) {
   EXPECT_NEAR(g.extrapolatedError, 0.0171, 0.00005);
   EXPECT_NEAR(g.gci, 0.0217, 0.00005);
   EXPECT_FALSE(g.oscillatory);
+  // p = 1.53 lies within [0.5, 2] at the default formal order 1: Celik's band.
+  EXPECT_TRUE(g.asymptotic);
+  EXPECT_EQ(g.basis, UncertaintyBasis::ObservedOrder);
 }
 
 TEST(GridConvergence, RecoversAKnownPowerOfTheSpacing) {
   // phi = 2 + 0.5 h^2 at a constant ratio, and phi = 1 - 3 h^1.3 at unequal ratios (the fixed
   // point's q term): the order and the limit to round-off, in any order of the inputs.
-  const GridConvergence a = gridConvergence({2.25, 1.0, 1.5}, {2 + 0.5 * 2.25 * 2.25, 2.5, 2 + 0.5 * 2.25});
+  // (A second-order sequence, so a second-order method's: at formal order 1, p = 2 is the edge.)
+  const GridConvergence a = gridConvergence({2.25, 1.0, 1.5}, {2 + 0.5 * 2.25 * 2.25, 2.5, 2 + 0.5 * 2.25}, 2.0);
   ASSERT_TRUE(a.valid);
+  ASSERT_TRUE(a.asymptotic) << a.note;
   EXPECT_NEAR(a.order, 2.0, 1e-10);
   EXPECT_NEAR(a.extrapolated, 2.0, 1e-12);
   // The GCI bounds the finest value's error: 0.5 against 1.25 x (0.625/2.5)/(1.5^2 - 1) x 2.5.
@@ -49,13 +54,79 @@ TEST(GridConvergence, FlagsOscillationAndRefusesWhatHasNoOrder) {
   const GridConvergence osc = gridConvergence({1.0, 2.0, 4.0}, {1.0, 1.1, 0.95});
   EXPECT_TRUE(osc.oscillatory);
   EXPECT_NE(osc.note.find("oscillatory"), std::string::npos);
+  EXPECT_FALSE(osc.asymptotic);
   const GridConvergence flat = gridConvergence({1.0, 2.0, 4.0}, {3.0, 3.0, 3.5});
   EXPECT_FALSE(flat.valid);
   EXPECT_FALSE(flat.note.empty());
+  EXPECT_EQ(flat.basis, UncertaintyBasis::None);
+  EXPECT_EQ(flat.uncertainty, 0.0);
   EXPECT_THROW(gridConvergence({1.0, 2.0}, {1.0, 2.0}), std::invalid_argument);
   EXPECT_THROW(gridConvergence({1.0, 1.0, 2.0}, {1.0, 2.0, 3.0}), std::invalid_argument);
   EXPECT_THROW(gridConvergence({1.0, 2.0, -4.0}, {1.0, 2.0, 3.0}), std::invalid_argument);
   EXPECT_THROW(gridConvergence({1.0, 2.0, 4.0}, {1.0, 2.0}), std::invalid_argument);
+  EXPECT_THROW(gridConvergence({1.0, 2.0, 4.0}, {1.0, 2.0, 3.0}, 0.0), std::invalid_argument);
+}
+
+TEST(GridConvergence, AnOrderFasterThanTheMethodTakesRoachesFallbackBand) {
+  // phi = 1 + h^4 at h = 1, 2, 4 (2, 17, 257): the order is 4. For a fourth-order method that is
+  // the asymptotic range, and Celik's band (1.25 x 7.5 / 15 x 2 = 1.25) holds the error (1).
+  const GridConvergence fourth = gridConvergence({1.0, 2.0, 4.0}, {2.0, 17.0, 257.0}, 4.0);
+  ASSERT_TRUE(fourth.asymptotic) << fourth.note;
+  EXPECT_NEAR(fourth.order, 4.0, 1e-9);
+  EXPECT_NEAR(fourth.uncertainty, 1.25, 1e-9);
+  // For a first-order method an order of 4 is not credible (above twice 1): no extrapolation is
+  // claimed, and the band is Roache's, 3 x |e21| / (r21^1 - 1) = 3 x 15 / 1.
+  const GridConvergence first = gridConvergence({1.0, 2.0, 4.0}, {2.0, 17.0, 257.0});
+  EXPECT_TRUE(first.valid);
+  EXPECT_FALSE(first.asymptotic);
+  EXPECT_EQ(first.basis, UncertaintyBasis::FormalFallback);
+  EXPECT_DOUBLE_EQ(first.bandOrder, 1.0);
+  EXPECT_NEAR(first.uncertainty, 45.0, 1e-9);
+  EXPECT_NE(first.note.find("above 2"), std::string::npos) << first.note;
+}
+
+TEST(GridConvergence, OscillatingChangesGetABandAtLeastHalfTheirSpread) {
+  // EMI 19.0's peak bulge (runs of docs/whipple.md's headline rows, Courant 0.15) at 0.533, 0.4
+  // and 0.2 mm: 8.357, 6.463 and 6.723 mm. The changes alternate; Celik's formula finds p = 6.44
+  // and a band of 0.004 mm, which the coarser levels belie. Roache's band at order 1 is
+  // 3 x 0.26 / (2 - 1) = 0.78 mm; half the spread (Stern et al. 2001) is 0.947 mm: the band.
+  const GridConvergence g = gridConvergence({0.5333334e-3, 0.4e-3, 0.2e-3}, {8.357e-3, 6.463e-3, 6.723e-3});
+  EXPECT_NEAR(g.order, 6.44, 0.005);
+  EXPECT_TRUE(g.oscillatory);
+  EXPECT_EQ(g.basis, UncertaintyBasis::FormalFallback);
+  EXPECT_NEAR(g.uncertainty, 0.947e-3, 1e-12);
+  // With the spread small, Roache's band governs: 1.0, 1.01, 0.995 at h = 1, 2, 4: 3 x 0.01 / 1.
+  const GridConvergence small = gridConvergence({1.0, 2.0, 4.0}, {1.0, 1.01, 0.995});
+  EXPECT_NEAR(small.uncertainty, 0.03, 1e-12);
+}
+
+TEST(GridConvergence, ASlowerOrderIsNotSpedUpAndNoOrderStillGetsABand) {
+  // phi = 1 + h^0.3 at h = 1, 2, 4: p = 0.3, below 0.5. At the formal order 1 the band would be
+  // 3 x 0.231 / 1 = 0.69 and miss the finest error (1); at the observed 0.3 it is 3.0 and holds it.
+  auto phi = [](double h) { return 1.0 + std::pow(h, 0.3); };
+  const GridConvergence slow = gridConvergence({1.0, 2.0, 4.0}, {phi(1.0), phi(2.0), phi(4.0)});
+  EXPECT_EQ(slow.basis, UncertaintyBasis::FormalFallback);
+  EXPECT_NEAR(slow.bandOrder, 0.3, 1e-9);
+  EXPECT_NEAR(slow.uncertainty, 3.0, 1e-9);
+  // Equal changes at a constant ratio (p = 0: the values do not follow a power of h): no order,
+  // and the band at the formal order, 3 x 1 / (2 - 1).
+  const GridConvergence none = gridConvergence({1.0, 2.0, 4.0}, {1.0, 2.0, 3.0});
+  EXPECT_FALSE(none.valid);
+  EXPECT_EQ(none.basis, UncertaintyBasis::FormalFallback);
+  EXPECT_NEAR(none.uncertainty, 3.0, 1e-12);
+  // Two equal coarse values leave no order either; the fine change still gives the band.
+  const GridConvergence coarse = gridConvergence({1.0, 2.0, 4.0}, {1.0, 1.5, 1.5});
+  EXPECT_FALSE(coarse.valid);
+  EXPECT_EQ(coarse.basis, UncertaintyBasis::FormalFallback);
+  EXPECT_NEAR(coarse.uncertainty, 1.5, 1e-12);
+  // A value that is not a number: no order and no band (not a NaN band).
+  const GridConvergence nan = gridConvergence({1.0, 2.0, 4.0}, {1.0, std::nan(""), 1.5});
+  EXPECT_EQ(nan.basis, UncertaintyBasis::None);
+  EXPECT_EQ(nan.uncertainty, 0.0);
+  // The names the outputs carry (bench/headline.py matches the fallback's).
+  EXPECT_STREQ(uncertaintyBasisName(UncertaintyBasis::FormalFallback), "formal-order fallback");
+  EXPECT_STREQ(uncertaintyBasisName(UncertaintyBasis::ObservedOrder), "observed order");
+  EXPECT_STREQ(uncertaintyBasisName(UncertaintyBasis::None), "none");
 }
 
 }  // namespace
