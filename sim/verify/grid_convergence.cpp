@@ -10,12 +10,12 @@ namespace ejecta::verify {
 
 namespace {
 
-// Roache's fallback band (grid_convergence.hpp): factor of safety 3 at the formal order, or at
-// the observed order where a monotone sequence converges more slowly; where the changes
-// alternate, at least half the spread of the three levels.
 // The band relative to |phi1|, or absolute where phi1 = 0.
 double bandScale(double f1) { return f1 != 0.0 ? std::abs(f1) : 1.0; }
 
+// Roache's fallback band (grid_convergence.hpp): factor of safety 3 at the formal order, or at
+// the observed order where a monotone sequence converges more slowly; where the changes
+// alternate, at least half the spread of the three levels.
 void fallbackBand(GridConvergence& g, double r21, double f1, double f2, double f3) {
   const bool slower = g.valid && !g.oscillatory && g.order < g.formalOrder;
   g.bandOrder = slower ? g.order : g.formalOrder;

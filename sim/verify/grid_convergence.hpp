@@ -15,12 +15,12 @@
 // The factor 1.25 is for levels in the asymptotic range. Where they are not (the changes
 // alternate in sign, the order does not settle or cannot be found from two equal coarse values,
 // or it is below 0.5 or above twice the method's formal order, faster than the scheme's
-// truncation error can fall) the band is Roache's
-// fallback (P. J. Roache 2011, J. Fluids Eng. 133, 115501: "if p_RE is unreasonable one at least
-// reverts to using p_th and FS = 3"): GCI = 3 |(phi1 - phi2) / phi1| / (r21^p - 1) with the
-// formal order, or the observed one where that is lower (a slower convergence is not sped up);
-// and where the changes alternate, at least half the spread of the three levels (Stern, Wilson,
-// Coleman & Paterson 2001, J. Fluids Eng. 123, 793: the oscillation's half amplitude).
+// truncation error can fall) the band is Roache's fallback (P. J. Roache 2011, J. Fluids Eng.
+// 133, 115501: "if p_RE is unreasonable one at least reverts to using p_th and FS = 3"):
+// GCI = 3 |(phi1 - phi2) / phi1| / (r21^p - 1) with the formal order, or the observed one where
+// that is lower (a slower convergence is not sped up); and where the changes alternate, at least
+// half the spread of the three levels (Stern, Wilson, Coleman & Paterson 2001, J. Fluids Eng.
+// 123, 793: the oscillation's half amplitude).
 #include <string>
 #include <vector>
 
