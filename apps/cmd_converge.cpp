@@ -38,9 +38,14 @@ std::string drawCharts(const fs::path& out, const coupling::ConvergenceResult& r
       }
       if (g.basis != verify::UncertaintyBasis::None) {
         const double fine = r.levels.back().values.at(q.name);
-        std::snprintf(label, sizeof label, "finest value +- fallback band (p = %.3g, FS 3)", g.bandOrder);
-        lines.push_back({fine + g.uncertainty, g.asymptotic ? "finest value +- GCI band" : label,
-                         render::LineStyle::Dotted});
+        if (g.basis == verify::UncertaintyBasis::LeastSquares)
+          std::snprintf(label, sizeof label, "finest value +- least-squares band (all levels, FS %.3g)",
+                        g.leastSquares.safetyFactor);
+        else if (g.asymptotic)
+          std::snprintf(label, sizeof label, "finest value +- GCI band");
+        else
+          std::snprintf(label, sizeof label, "finest value +- fallback band (p = %.3g, FS 3)", g.bandOrder);
+        lines.push_back({fine + g.uncertainty, label, render::LineStyle::Dotted});
         lines.push_back({fine - g.uncertainty, "", render::LineStyle::Dotted});
       }
       charts.writeChart({.csv = out / "levels.csv", .x = "spacing_m",
@@ -108,6 +113,20 @@ int convergeCommand(const ConvergeArgs& args) {
       j["gci"] = g.gci;
       j["uncertainty"] = g.uncertainty;
     }
+    const verify::LeastSquaresUncertainty& ls = g.leastSquares;
+    if (ls.available)
+      j["least_squares"] = {{"order", ls.order},
+                            {"order_at_search_bound", ls.orderAtSearchBound},
+                            {"estimate_order", ls.estimateOrder},
+                            {"weighted", ls.weighted},
+                            {"extrapolated", ls.extrapolated},
+                            {"error_estimate", ls.errorEstimate},
+                            {"standard_deviation", ls.standardDeviation},
+                            {"data_range", ls.dataRange},
+                            {"good_fit", ls.goodFit},
+                            {"safety_factor", ls.safetyFactor},
+                            {"uncertainty", ls.uncertainty},
+                            {"note", ls.note}};
     if (!g.note.empty()) j["note"] = g.note;
     json["quantities"].push_back(j);
   }
@@ -124,11 +143,17 @@ int convergeCommand(const ConvergeArgs& args) {
     char order[48] = "";
     if (g.valid) std::snprintf(order, sizeof order, "observed order %.3g: ", g.order);
     const std::string note = g.note.empty() ? "" : "; " + std::string(order) + g.note;
+    const char* band = g.basis == verify::UncertaintyBasis::LeastSquares ? "least-squares band" : "GCI";
     if (g.asymptotic)
       // Celik et al. (2008): the GCI band is the finest solution's uncertainty, so it is printed
       // about the finest value; the extrapolation is the estimate it brackets.
-      std::printf("  %s: finest %.6g +- %.3g (GCI %.3g%%), extrapolated %.6g, observed order %.3g\n", q.name.c_str(),
-                  fine, g.uncertainty, 100 * g.gci, g.extrapolated, g.order);
+      std::printf("  %s: finest %.6g +- %.3g (%s %.3g%%), extrapolated %.6g, observed order %.3g\n", q.name.c_str(),
+                  fine, g.uncertainty, band, 100 * g.gci, g.extrapolated, g.order);
+    else if (g.basis == verify::UncertaintyBasis::LeastSquares)
+      // Eca & Hoekstra's band over all levels, wider than the three finest's.
+      std::printf("  %s: finest %.6g +- %.3g (%.3g%%: the least-squares band over %zu levels, factor of safety "
+                  "%.3g)%s\n", q.name.c_str(), fine, g.uncertainty, 100 * g.gci, r.levels.size(),
+                  g.leastSquares.safetyFactor, note.c_str());
     else if (g.basis == verify::UncertaintyBasis::FormalFallback)
       // Not in the asymptotic range: no extrapolation is claimed, only Roache's wider band.
       std::printf("  %s: finest %.6g +- %.3g (%.3g%%: the fallback band, order %.3g, factor of safety 3)%s\n",

@@ -267,7 +267,8 @@ def verdict_row(study, answer, result):
 def answer_row(study, answer, result):
     """One Markdown row: the answer; the finest value with its GCI band (Celik et al. 2008 put
     the band about the finest solution) or, where the levels are not in the asymptotic range,
-    Roache's fallback band and the spread of the three finest levels; the extrapolated value;
+    Roache's fallback band and the spread of the three finest levels (with four or more levels,
+    Eca & Hoekstra's least-squares band where ejecta converge found it wider); the extrapolated value;
     the order; the note; the finest spacing and particles; the core time of all levels."""
     rerun = "`bench/headline.py --only %s`" % study["id"]
     if result is None:
@@ -295,8 +296,12 @@ def answer_row(study, answer, result):
     # In the asymptotic range: convergence.json says so; one written before it did (2026-12-07)
     # is judged as ejecta converge now judges it (an order of at most twice the formal order 1).
     asymptotic = q.get("asymptotic", q.get("valid") and not q.get("note") and q.get("observed_order", 0) <= 2.0)
+    least_squares = q.get("uncertainty_basis") == "least squares"
     if asymptotic:
         value = "%s ± %s" % (fine, number(q["uncertainty"] * scale, unit))
+        if least_squares:
+            # Eca & Hoekstra's band over all levels, wider than Celik's on the three finest.
+            value += " (least squares, %d levels)" % len(levels)
         extrapolated = number(q["extrapolated"] * scale, unit)
     else:
         # Where the procedure does not apply (oscillation, an order out of range, no order) an
@@ -308,6 +313,10 @@ def answer_row(study, answer, result):
         if q.get("uncertainty_basis") == "formal-order fallback":
             value = "%s ± %s (fallback band, order %.3g, factor of safety 3; not settled: %s)" % (
                 fine, number(q["uncertainty"] * scale, unit), q["band_order"], spread)
+        elif least_squares:
+            value = "%s ± %s (least-squares band over %d levels, factor of safety %.3g; not settled: %s)" % (
+                fine, number(q["uncertainty"] * scale, unit), len(levels), q["least_squares"]["safety_factor"],
+                spread)
         else:
             value = "%s (not settled: %s)" % (fine, spread)
         extrapolated = "—"

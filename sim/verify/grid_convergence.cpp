@@ -29,26 +29,9 @@ void fallbackBand(GridConvergence& g, double r21, double f1, double f2, double f
   g.uncertainty = g.gci * scale;
 }
 
-}  // namespace
-
-GridConvergence gridConvergence(std::vector<double> spacings, std::vector<double> values, double formalOrder) {
-  if (spacings.size() != values.size())
-    throw std::invalid_argument("grid convergence: as many spacings as values are needed");
-  if (spacings.size() < 3)
-    throw std::invalid_argument("grid convergence: at least three resolutions are needed for an order");
-  if (!(formalOrder > 0.0) || !std::isfinite(formalOrder))
-    throw std::invalid_argument("grid convergence: the formal order must be positive");
-  std::vector<std::size_t> order(spacings.size());
-  std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return spacings[a] < spacings[b]; });
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    if (!(spacings[order[k]] > 0.0) || !std::isfinite(spacings[order[k]]))
-      throw std::invalid_argument("grid convergence: spacings must be positive");
-    if (k > 0 && spacings[order[k]] == spacings[order[k - 1]])
-      throw std::invalid_argument("grid convergence: two resolutions share a spacing");
-  }
-  const double h1 = spacings[order[0]], h2 = spacings[order[1]], h3 = spacings[order[2]];
-  const double f1 = values[order[0]], f2 = values[order[1]], f3 = values[order[2]];
+// The three finest levels by Celik et al.'s procedure (the header), finest first.
+GridConvergence threeFinest(const double h[3], const double f[3], double formalOrder) {
+  const double f1 = f[0], f2 = f[1], f3 = f[2];
   GridConvergence g;
   g.formalOrder = formalOrder;
   if (!std::isfinite(f1) || !std::isfinite(f2) || !std::isfinite(f3)) {
@@ -56,7 +39,7 @@ GridConvergence gridConvergence(std::vector<double> spacings, std::vector<double
     return g;
   }
   const double e21 = f2 - f1, e32 = f3 - f2;
-  const double r21 = h2 / h1, r32 = h3 / h2;
+  const double r21 = h[1] / h[0], r32 = h[2] / h[1];
   g.relativeChange = std::abs(e21) / bandScale(f1);
   if (e21 == 0.0) {
     g.note = "the two finest values are equal: no order (converged to the output's precision, or insensitive)";
@@ -115,10 +98,59 @@ GridConvergence gridConvergence(std::vector<double> spacings, std::vector<double
   return g;
 }
 
+}  // namespace
+
+GridConvergence gridConvergence(std::vector<double> spacings, std::vector<double> values, double formalOrder) {
+  if (spacings.size() != values.size())
+    throw std::invalid_argument("grid convergence: as many spacings as values are needed");
+  if (spacings.size() < 3)
+    throw std::invalid_argument("grid convergence: at least three resolutions are needed for an order");
+  if (!(formalOrder > 0.0) || !std::isfinite(formalOrder))
+    throw std::invalid_argument("grid convergence: the formal order must be positive");
+  std::vector<std::size_t> order(spacings.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return spacings[a] < spacings[b]; });
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    if (!(spacings[order[k]] > 0.0) || !std::isfinite(spacings[order[k]]))
+      throw std::invalid_argument("grid convergence: spacings must be positive");
+    if (k > 0 && spacings[order[k]] == spacings[order[k - 1]])
+      throw std::invalid_argument("grid convergence: two resolutions share a spacing");
+  }
+  const double h[3] = {spacings[order[0]], spacings[order[1]], spacings[order[2]]};
+  const double f[3] = {values[order[0]], values[order[1]], values[order[2]]};
+  GridConvergence g = threeFinest(h, f, formalOrder);
+  g.leastSquares = leastSquaresUncertainty(spacings, values, formalOrder);
+  const LeastSquaresUncertainty& ls = g.leastSquares;
+  if (!ls.available) return g;
+  // All levels must agree with the three finest that the range is asymptotic: an order within
+  // the same limits, found inside the search, and residuals below the data range.
+  const bool inRange = ls.order >= 0.5 && ls.order <= 2.0 * formalOrder && !ls.orderAtSearchBound && ls.goodFit;
+  if (g.asymptotic && !inRange) {
+    char why[200];
+    std::snprintf(why, sizeof why, "the %zu levels together do not follow one power of h (least squares: order %.3g, "
+                  "scatter %.3g against a data range of %.3g per level)", spacings.size(), ls.order,
+                  ls.standardDeviation, ls.dataRange);
+    g.note = why;
+    g.asymptotic = false;
+    fallbackBand(g, h[1] / h[0], f[0], f[1], f[2]);
+  }
+  // The wider band: the three finest's where it holds the scatter of all levels, else Eca and
+  // Hoekstra's.
+  if (ls.uncertainty > g.uncertainty) {
+    g.basis = UncertaintyBasis::LeastSquares;
+    g.bandOrder = ls.estimateOrder;
+    g.uncertainty = ls.uncertainty;
+    g.gci = ls.uncertainty / bandScale(f[0]);
+    g.note += (g.note.empty() ? "" : "; the band from all levels: ") + ls.note;
+  }
+  return g;
+}
+
 const char* uncertaintyBasisName(UncertaintyBasis basis) {
   switch (basis) {
     case UncertaintyBasis::ObservedOrder: return "observed order";
     case UncertaintyBasis::FormalFallback: return "formal-order fallback";
+    case UncertaintyBasis::LeastSquares: return "least squares";
     case UncertaintyBasis::None: break;
   }
   return "none";

@@ -21,8 +21,16 @@
 // that is lower (a slower convergence is not sped up); and where the changes alternate, at least
 // half the spread of the three levels (Stern, Wilson, Coleman & Paterson 2001, J. Fluids Eng.
 // 123, 793: the oscillation's half amplitude).
+//
+// With four or more levels, all of them are fitted by least squares too (Eca & Hoekstra 2014,
+// least_squares_uncertainty.hpp). The three finest are in the asymptotic range only where the fit
+// agrees (its order within the same limits, its residuals below the data range), and the band is
+// the wider of the two: three levels fix an order exactly and cannot see the scatter a fourth
+// shows, so a band from the two finest alone can understate where they agree by chance.
 #include <string>
 #include <vector>
+
+#include "sim/verify/least_squares_uncertainty.hpp"
 
 namespace ejecta::verify {
 
@@ -30,6 +38,7 @@ enum class UncertaintyBasis {
   None,            // no band: the two finest values are equal, or a value is not finite
   ObservedOrder,   // Celik et al.: the observed order, factor of safety 1.25
   FormalFallback,  // Roache's fallback: the formal (or a lower observed) order, factor of safety 3
+  LeastSquares,    // Eca & Hoekstra's fit over four or more levels, where its band is the wider
 };
 
 struct GridConvergence {
@@ -44,18 +53,20 @@ struct GridConvergence {
   bool oscillatory = false;           // s < 0
   bool asymptotic = false;            // monotone, the order settled and within [0.5, 2 p_formal]
   double formalOrder = 1.0;           // the method's order the check and the fallback use
-  double bandOrder = 0.0;             // the order the band was computed with
+  double bandOrder = 0.0;             // the order the band was computed with (least squares: the fitted one)
   UncertaintyBasis basis = UncertaintyBasis::None;
+  LeastSquaresUncertainty leastSquares;  // over all levels (available with four or more)
 };
 
 // `spacings` and `values` in any order of resolution (at least 3 pairs; with more, the three
-// finest are used). `formalOrder`: the method's order for the quantity (1 for SPH across shocks,
+// finest give the order and the extrapolation, and all of them the least-squares check and
+// band). `formalOrder`: the method's order for the quantity (1 for SPH across shocks,
 // the default; 2 for smooth flow). Throws std::invalid_argument for mismatched sizes, fewer
 // than three levels, non-positive or repeated spacings, or a non-positive formal order.
 GridConvergence gridConvergence(std::vector<double> spacings, std::vector<double> values,
                                 double formalOrder = 1.0);
 
-// "observed order" / "formal-order fallback" / "none": for outputs.
+// "observed order" / "formal-order fallback" / "least squares" / "none": for outputs.
 const char* uncertaintyBasisName(UncertaintyBasis basis);
 
 }  // namespace ejecta::verify
