@@ -78,11 +78,10 @@ double quantityOf(const nlohmann::json& summary, const std::string& name, const 
   if (extras.contains(name) && extras[name].is_number()) return extras[name].get<double>();
   if (name == "energy_relative_error") return summary.at("energy").at("relative_error").get<double>();
   if (summary.contains(name) && summary[name].is_number()) return summary[name].get<double>();
-  std::string known;
+  std::string known = "energy_relative_error, wall_seconds, particles, steps";
   for (const auto& [key, value] : extras.items())
-    if (value.is_number()) known += (known.empty() ? "" : ", ") + key;
-  throw std::runtime_error((dir / "summary.json").string() + ": no number '" + name +
-                           "'; its numbers: energy_relative_error, wall_seconds, particles, steps, " + known);
+    if (value.is_number()) known += ", " + key;
+  throw std::runtime_error((dir / "summary.json").string() + ": no number '" + name + "'; its numbers: " + known);
 }
 
 void analyse(ConvergenceResult& result, const ConvergenceOptions& o) {
