@@ -52,6 +52,15 @@ GridConvergence threeFinest(const double h[3], const double f[3], double formalO
   }
   const double s = e32 / e21 > 0.0 ? 1.0 : -1.0;
   g.oscillatory = s < 0.0;
+  // A converging power of h, phi1 + a (h^p - h1^p) with p > 0, changes by e21 / e32 =
+  // (1 - r21^-p) / (r32^p - 1) < ln r21 / ln r32 (the limit p -> 0; 1 at equal ratios). A finer
+  // change larger than that is monotone divergence (Stern et al. 2001: R = e21 / e32 > 1), which
+  // Celik's |ln| would report as a positive order.
+  if (s > 0.0 && std::abs(e21) * std::log(r32) > std::abs(e32) * std::log(r21)) {
+    g.note = "the changes grow as the spacing shrinks (monotone divergence): no order";
+    fallbackBand(g, r21, f1, f2, f3);
+    return g;
+  }
   // Fixed point for p (Celik et al. 2008, eqs. 3a-3c), from q = 0.
   double p = std::abs(std::log(std::abs(e32 / e21))) / std::log(r21);
   bool settled = false;
@@ -134,14 +143,27 @@ GridConvergence gridConvergence(std::vector<double> spacings, std::vector<double
     g.asymptotic = false;
     fallbackBand(g, h[1] / h[0], f[0], f[1], f[2]);
   }
-  // The wider band: the three finest's where it holds the scatter of all levels, else Eca and
-  // Hoekstra's.
+  // Where the three finest's changes alternate, Roache's fallback (a monotone sequence's bound,
+  // three times the last change over r21 - 1) measures the last swing, not the error: the fit
+  // over all levels is the band there, at least half the three finest's spread (Stern et al.).
+  // Elsewhere the wider band: the three finest's where it holds the scatter of all levels, else
+  // Eca and Hoekstra's (whose fixed-order fits understate a slower order than 0.5).
+  const std::string fromAll = (g.note.empty() ? "" : "; the band from all levels: ") + ls.note;
+  if (g.oscillatory) {
+    const double halfSpread = 0.5 * (std::max({f[0], f[1], f[2]}) - std::min({f[0], f[1], f[2]}));
+    g.basis = UncertaintyBasis::LeastSquares;
+    g.bandOrder = ls.estimateOrder;
+    g.uncertainty = std::max(ls.uncertainty, halfSpread);
+    g.gci = g.uncertainty / bandScale(f[0]);
+    g.note += fromAll + (halfSpread > ls.uncertainty ? " (raised to half the three finest's spread)" : "");
+    return g;
+  }
   if (ls.uncertainty > g.uncertainty) {
     g.basis = UncertaintyBasis::LeastSquares;
     g.bandOrder = ls.estimateOrder;
     g.uncertainty = ls.uncertainty;
     g.gci = ls.uncertainty / bandScale(f[0]);
-    g.note += (g.note.empty() ? "" : "; the band from all levels: ") + ls.note;
+    g.note += fromAll;
   }
   return g;
 }

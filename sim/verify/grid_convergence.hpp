@@ -13,7 +13,8 @@
 //   GCI_fine = 1.25 |(phi1 - phi2) / phi1| / (r21^p - 1)  (the factor 1.25 for three grids).
 //
 // The factor 1.25 is for levels in the asymptotic range. Where they are not (the changes
-// alternate in sign, the order does not settle or cannot be found from two equal coarse values,
+// alternate in sign, grow as the spacing shrinks (no converging power of h gives a finer change
+// e21 / e32 >= ln r21 / ln r32), the order does not settle or cannot be found from two equal coarse values,
 // or it is below 0.5 or above twice the method's formal order, faster than the scheme's
 // truncation error can fall) the band is Roache's fallback (P. J. Roache 2011, J. Fluids Eng.
 // 133, 115501: "if p_RE is unreasonable one at least reverts to using p_th and FS = 3"):
@@ -26,7 +27,9 @@
 // least_squares_uncertainty.hpp). The three finest are in the asymptotic range only where the fit
 // agrees (its order within the same limits, its residuals below the data range), and the band is
 // the wider of the two: three levels fix an order exactly and cannot see the scatter a fourth
-// shows, so a band from the two finest alone can understate where they agree by chance.
+// shows, so a band from the two finest alone can understate where they agree by chance. Where
+// the three finest alternate, the fit's band replaces the fallback (at least half their spread):
+// the fallback bounds a monotone sequence, and on a swing it only scales the last change.
 #include <string>
 #include <vector>
 

@@ -67,6 +67,25 @@ TEST(GridConvergence, FlagsOscillationAndRefusesWhatHasNoOrder) {
   EXPECT_THROW(gridConvergence({1.0, 2.0, 4.0}, {1.0, 2.0, 3.0}, 0.0), std::invalid_argument);
 }
 
+TEST(GridConvergence, ChangesThatGrowAreDivergenceNotAnOrder) {
+  // Case 1's rim (bench/headline.toml case1_rim, 2026-12-07) at 0.354, 0.25 and 0.177 m: 15.64,
+  // 18.05 and 25.13% of the yield. The finer change (7.08 points) is larger than the coarser
+  // (2.41) at a constant ratio: no converging power of h does that, though Celik's |ln| gives
+  // p = 3.1. No order, and Roache's band at the formal order: 3 x 0.0708 / (sqrt 2 - 1).
+  const GridConvergence rim =
+      gridConvergence({0.35355, 0.25, 0.1768}, {0.15641239039906552, 0.1804890136184845, 0.25125358394669717});
+  EXPECT_FALSE(rim.valid);
+  EXPECT_FALSE(rim.asymptotic);
+  EXPECT_NE(rim.note.find("monotone divergence"), std::string::npos) << rim.note;
+  EXPECT_EQ(rim.basis, UncertaintyBasis::FormalFallback);
+  EXPECT_NEAR(rim.uncertainty, 3.0 * (0.25125358394669717 - 0.1804890136184845) / (0.25 / 0.1768 - 1.0), 1e-12);
+  // At unequal ratios a converging sequence can have a finer change larger than the coarser:
+  // phi = 1 + h at h = 1, 2, 2.2 (changes 1 and 0.2; ln 2 / ln 1.1 = 7.3 > 5). It keeps its order.
+  const GridConvergence unequal = gridConvergence({1.0, 2.0, 2.2}, {2.0, 3.0, 3.2});
+  ASSERT_TRUE(unequal.valid) << unequal.note;
+  EXPECT_NEAR(unequal.order, 1.0, 1e-9);
+}
+
 TEST(GridConvergence, AnOrderFasterThanTheMethodTakesRoachesFallbackBand) {
   // phi = 1 + h^4 at h = 1, 2, 4 (2, 17, 257): the order is 4. For a fourth-order method that is
   // the asymptotic range, and Celik's band (1.25 x 7.5 / 15 x 2 = 1.25) holds the error (1).

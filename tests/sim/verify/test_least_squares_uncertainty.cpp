@@ -121,6 +121,19 @@ TEST(LeastSquaresUncertainty, TheFollowerFluxStudySeesTheScatterOfItsLevels) {
   EXPECT_LE(flux[5] - flux[3], all.uncertainty);
   // Not so wide as to say nothing: within the spread of the levels.
   EXPECT_LT(all.uncertainty, flux[0] - flux[3]);
+  // The study's seventh level, 0.0625 m (2026-12-07): 1.11503e6, 11% below. The three finest now
+  // alternate, and Roache's fallback on that last swing, 3 x 1.378e5 / (sqrt 2 - 1), would be
+  // +-1.0e6 (90%). The fit over the seven levels is the band there instead (factor of safety 3):
+  // it holds every level from 0.177 m down and is a third of the fallback.
+  std::vector<double> h7 = h, flux7 = flux;
+  h7.push_back(0.0625);
+  flux7.push_back(1115032.11);
+  const GridConvergence seven = gridConvergence(h7, flux7);
+  EXPECT_TRUE(seven.oscillatory);
+  EXPECT_EQ(seven.basis, UncertaintyBasis::LeastSquares);
+  EXPECT_DOUBLE_EQ(seven.uncertainty, seven.leastSquares.uncertainty);
+  for (std::size_t i = 3; i < flux7.size(); ++i) EXPECT_LE(std::abs(flux7[i] - flux7[6]), seven.uncertainty) << i;
+  EXPECT_LT(seven.uncertainty, 3.0 * (flux7[5] - flux7[6]) / (h7[5] / h7[6] - 1.0) / 3.0);
 }
 
 TEST(LeastSquaresUncertainty, GridConvergenceKeepsTheWiderBandAndChecksTheRange) {
