@@ -74,8 +74,8 @@ ConvergenceResult runVerificationConvergence(const std::string& problem, const C
 
 // levels.csv: factor, spacing, particles, wall seconds, one column per quantity.
 std::string levelsCsv(const ConvergenceResult& result);
-// convergence.csv: per quantity, the finest value, order, extrapolated value, GCI, band and
-// the band's basis.
+// convergence.csv: per quantity, the finest value, order, extrapolated value, GCI, band, the
+// band's basis, and the least-squares fit's order, scatter and band (four or more levels).
 std::string convergenceCsv(const ConvergenceResult& result);
 
 }  // namespace ejecta::coupling

@@ -38,7 +38,8 @@
 namespace ejecta::verify {
 
 enum class UncertaintyBasis {
-  None,            // no band: the two finest values are equal, or a value is not finite
+  None,            // no band: a value is not finite, or the two finest values are equal and
+                   // there are only three levels (with more, the fit over all gives the band)
   ObservedOrder,   // Celik et al.: the observed order, factor of safety 1.25
   FormalFallback,  // Roache's fallback: the formal (or a lower observed) order, factor of safety 3
   LeastSquares,    // Eca & Hoekstra's fit over four or more levels, where its band is the wider
@@ -54,7 +55,8 @@ struct GridConvergence {
   double gci = 0.0;                   // the band relative to |phi1| (by `basis`)
   double uncertainty = 0.0;           // gci |phi1|: the band on the finest value
   bool oscillatory = false;           // s < 0
-  bool asymptotic = false;            // monotone, the order settled and within [0.5, 2 p_formal]
+  bool asymptotic = false;            // monotone, the order settled and within [0.5, 2 p_formal],
+                                      // and with four or more levels the fit agrees
   double formalOrder = 1.0;           // the method's order the check and the fallback use
   double bandOrder = 0.0;             // the order the band was computed with (least squares: the fitted one)
   UncertaintyBasis basis = UncertaintyBasis::None;
