@@ -13,6 +13,11 @@ namespace {
 // The band relative to |phi1|, or absolute where phi1 = 0.
 double bandScale(double f1) { return f1 != 0.0 ? std::abs(f1) : 1.0; }
 
+// Half the spread of three levels: an oscillation's half amplitude (Stern et al. 2001).
+double halfSpread(double f1, double f2, double f3) {
+  return 0.5 * (std::max({f1, f2, f3}) - std::min({f1, f2, f3}));
+}
+
 // Roache's fallback band (grid_convergence.hpp): factor of safety 3 at the formal order, or at
 // the observed order where a monotone sequence converges more slowly; where the changes
 // alternate, at least half the spread of the three levels.
@@ -22,10 +27,7 @@ void fallbackBand(GridConvergence& g, double r21, double f1, double f2, double f
   g.basis = UncertaintyBasis::FormalFallback;
   const double scale = bandScale(f1);
   g.gci = 3.0 * g.relativeChange / (std::pow(r21, g.bandOrder) - 1.0);
-  if (g.oscillatory) {
-    const double halfSpread = 0.5 * (std::max({f1, f2, f3}) - std::min({f1, f2, f3}));
-    g.gci = std::max(g.gci, halfSpread / scale);
-  }
+  if (g.oscillatory) g.gci = std::max(g.gci, halfSpread(f1, f2, f3) / scale);
   g.uncertainty = g.gci * scale;
 }
 
@@ -150,12 +152,12 @@ GridConvergence gridConvergence(std::vector<double> spacings, std::vector<double
   // Eca and Hoekstra's (whose fixed-order fits understate a slower order than 0.5).
   const std::string fromAll = (g.note.empty() ? "" : "; the band from all levels: ") + ls.note;
   if (g.oscillatory) {
-    const double halfSpread = 0.5 * (std::max({f[0], f[1], f[2]}) - std::min({f[0], f[1], f[2]}));
+    const double floor = halfSpread(f[0], f[1], f[2]);
     g.basis = UncertaintyBasis::LeastSquares;
     g.bandOrder = ls.estimateOrder;
-    g.uncertainty = std::max(ls.uncertainty, halfSpread);
+    g.uncertainty = std::max(ls.uncertainty, floor);
     g.gci = g.uncertainty / bandScale(f[0]);
-    g.note += fromAll + (halfSpread > ls.uncertainty ? " (raised to half the three finest's spread)" : "");
+    g.note += fromAll + (floor > ls.uncertainty ? " (raised to half the three finest's spread)" : "");
     return g;
   }
   if (ls.uncertainty > g.uncertainty) {
