@@ -38,14 +38,8 @@ std::string drawCharts(const fs::path& out, const coupling::ConvergenceResult& r
       }
       if (g.basis != verify::UncertaintyBasis::None) {
         const double fine = r.levels.back().values.at(q.name);
-        if (g.basis == verify::UncertaintyBasis::LeastSquares)
-          std::snprintf(label, sizeof label, "finest value +- least-squares band (all levels, FS %.3g)",
-                        g.leastSquares.safetyFactor);
-        else if (g.asymptotic)
-          std::snprintf(label, sizeof label, "finest value +- GCI band");
-        else
-          std::snprintf(label, sizeof label, "finest value +- fallback band (p = %.3g, FS 3)", g.bandOrder);
-        lines.push_back({fine + g.uncertainty, label, render::LineStyle::Dotted});
+        lines.push_back({fine + g.uncertainty, "finest value +- " + verify::describeBand(g, r.levels.size()),
+                         render::LineStyle::Dotted});
         lines.push_back({fine - g.uncertainty, "", render::LineStyle::Dotted});
       }
       charts.writeChart({.csv = out / "levels.csv", .x = "spacing_m",
@@ -110,6 +104,7 @@ int convergeCommand(const ConvergeArgs& args) {
     j["uncertainty_basis"] = verify::uncertaintyBasisName(g.basis);
     if (g.basis != verify::UncertaintyBasis::None) {
       j["band_order"] = g.bandOrder;
+      j["band_at_half_spread"] = g.bandAtHalfSpread;
       j["gci"] = g.gci;
       j["uncertainty"] = g.uncertainty;
     }
@@ -143,21 +138,16 @@ int convergeCommand(const ConvergeArgs& args) {
     char order[48] = "";
     if (g.valid) std::snprintf(order, sizeof order, "observed order %.3g: ", g.order);
     const std::string note = g.note.empty() ? "" : "; " + std::string(order) + g.note;
-    const char* band = g.basis == verify::UncertaintyBasis::LeastSquares ? "least-squares band" : "GCI";
+    const std::string band = verify::describeBand(g, r.levels.size());
     if (g.asymptotic)
       // Celik et al. (2008): the GCI band is the finest solution's uncertainty, so it is printed
       // about the finest value; the extrapolation is the estimate it brackets.
-      std::printf("  %s: finest %.6g +- %.3g (%s %.3g%%), extrapolated %.6g, observed order %.3g\n", q.name.c_str(),
-                  fine, g.uncertainty, band, 100 * g.gci, g.extrapolated, g.order);
-    else if (g.basis == verify::UncertaintyBasis::LeastSquares)
-      // Eca & Hoekstra's band over all levels, wider than the three finest's.
-      std::printf("  %s: finest %.6g +- %.3g (%.3g%%: the least-squares band over %zu levels, factor of safety "
-                  "%.3g)%s\n", q.name.c_str(), fine, g.uncertainty, 100 * g.gci, r.levels.size(),
-                  g.leastSquares.safetyFactor, note.c_str());
-    else if (g.basis == verify::UncertaintyBasis::FormalFallback)
-      // Not in the asymptotic range: no extrapolation is claimed, only Roache's wider band.
-      std::printf("  %s: finest %.6g +- %.3g (%.3g%%: the fallback band, order %.3g, factor of safety 3)%s\n",
-                  q.name.c_str(), fine, g.uncertainty, 100 * g.gci, g.bandOrder, note.c_str());
+      std::printf("  %s: finest %.6g +- %.3g (%.3g%%: the %s), extrapolated %.6g, observed order %.3g\n",
+                  q.name.c_str(), fine, g.uncertainty, 100 * g.gci, band.c_str(), g.extrapolated, g.order);
+    else if (g.basis != verify::UncertaintyBasis::None)
+      // Not in the asymptotic range: no extrapolation is claimed, only the wider band.
+      std::printf("  %s: finest %.6g +- %.3g (%.3g%%: the %s)%s\n", q.name.c_str(), fine, g.uncertainty,
+                  100 * g.gci, band.c_str(), note.c_str());
     else
       std::printf("  %s: finest %.6g; %s\n", q.name.c_str(), fine, g.note.c_str());
   }

@@ -75,6 +75,11 @@ def load_manifest(path):
             for key in ("label", "quantity"):
                 need(key in answer, where, "answer[%d] has no '%s'" % (j, key))
             need(isinstance(answer.get("scale", 1), (int, float)), where, "answer[%d]: scale is a number" % j)
+            for key in ("minimum", "maximum"):
+                need(isinstance(answer.get(key, 0), (int, float)), where,
+                     "answer[%d]: %s is a number (in the row's unit, after scale)" % (j, key))
+            need(answer.get("minimum", -math.inf) < answer.get("maximum", math.inf), where,
+                 "answer[%d]: minimum must be below maximum" % j)
             need(answer.get("verdict", "P") in VERDICTS, where,
                  "answer[%d]: verdict is the experiment's, one of %s" % (j, ", ".join(VERDICTS)))
     for i, row in enumerate(manifest.get("open", [])):
@@ -264,6 +269,29 @@ def verdict_row(study, answer, result):
         duration(core_seconds), len(levels))
 
 
+def band_name(own, q):
+    """The band's name as the row gives it: its own (Roache's fallback, the least-squares fit), or
+    half the three finest's spread where ejecta converge found that wider (an oscillation's half
+    amplitude, Stern et al. 2001), so that the row does not quote a factor of safety it did not use."""
+    if q.get("band_at_half_spread"):
+        return "half the three finest's spread, wider than the %s" % own
+    return own
+
+
+def clipped(q, answer):
+    """Where the band runs past what the quantity can be (the answer's minimum and maximum in the
+    row's unit: a share lies between 0 and 100%), the interval it leaves, as "; clipped to ..."."""
+    scale = answer.get("scale", 1.0)
+    unit = answer.get("unit", "")
+    fine = q["finest"] * scale
+    band = q["uncertainty"] * scale
+    low = max(fine - band, answer.get("minimum", -math.inf))
+    high = min(fine + band, answer.get("maximum", math.inf))
+    if (low, high) == (fine - band, fine + band):
+        return ""
+    return "; the band clipped to what the quantity can be: %s to %s" % (number(low, unit), number(high, unit))
+
+
 def answer_row(study, answer, result):
     """One Markdown row: the answer; the finest value with its GCI band (Celik et al. 2008 put
     the band about the finest solution) or, where the levels are not in the asymptotic range,
@@ -299,9 +327,11 @@ def answer_row(study, answer, result):
     least_squares = q.get("uncertainty_basis") == "least squares"
     if asymptotic:
         value = "%s ± %s" % (fine, number(q["uncertainty"] * scale, unit))
-        if least_squares:
-            # Eca & Hoekstra's band over all levels, wider than Celik's on the three finest.
-            value += " (least squares, %d levels)" % len(levels)
+        # Eca & Hoekstra's band over all levels where it is wider than Celik's on the three finest.
+        remarks = ["least squares, %d levels" % len(levels)] if least_squares else []
+        remarks += [clipped(q, answer)[2:]] if clipped(q, answer) else []
+        if remarks:
+            value += " (%s)" % "; ".join(remarks)
         extrapolated = number(q["extrapolated"] * scale, unit)
     else:
         # Where the procedure does not apply (oscillation, an order out of range, no order) an
@@ -311,12 +341,15 @@ def answer_row(study, answer, result):
         last = sorted(l["values"][answer["quantity"]] * scale for l in levels[-3:])
         spread = "%s to %s over the three finest" % (number(last[0], unit), number(last[-1], unit))
         if q.get("uncertainty_basis") == "formal-order fallback":
-            value = "%s ± %s (fallback band, order %.3g, factor of safety 3; not settled: %s)" % (
-                fine, number(q["uncertainty"] * scale, unit), q["band_order"], spread)
+            value = "%s ± %s (%s; not settled: %s%s)" % (
+                fine, number(q["uncertainty"] * scale, unit),
+                band_name("fallback band, order %.3g, factor of safety 3" % q["band_order"], q), spread,
+                clipped(q, answer))
         elif least_squares:
-            value = "%s ± %s (least-squares band over %d levels, factor of safety %.3g; not settled: %s)" % (
-                fine, number(q["uncertainty"] * scale, unit), len(levels), q["least_squares"]["safety_factor"],
-                spread)
+            value = "%s ± %s (%s; not settled: %s%s)" % (
+                fine, number(q["uncertainty"] * scale, unit),
+                band_name("least-squares band over %d levels, factor of safety %.3g" % (
+                    len(levels), q["least_squares"]["safety_factor"]), q), spread, clipped(q, answer))
         else:
             value = "%s (not settled: %s)" % (fine, spread)
         extrapolated = "—"

@@ -27,7 +27,9 @@ void fallbackBand(GridConvergence& g, double r21, double f1, double f2, double f
   g.basis = UncertaintyBasis::FormalFallback;
   const double scale = bandScale(f1);
   g.gci = 3.0 * g.relativeChange / (std::pow(r21, g.bandOrder) - 1.0);
-  if (g.oscillatory) g.gci = std::max(g.gci, halfSpread(f1, f2, f3) / scale);
+  const double half = halfSpread(f1, f2, f3) / scale;
+  g.bandAtHalfSpread = g.oscillatory && half > g.gci;
+  if (g.bandAtHalfSpread) g.gci = half;
   g.uncertainty = g.gci * scale;
 }
 
@@ -155,14 +157,16 @@ GridConvergence gridConvergence(std::vector<double> spacings, std::vector<double
     const double floor = halfSpread(f[0], f[1], f[2]);
     g.basis = UncertaintyBasis::LeastSquares;
     g.bandOrder = ls.estimateOrder;
+    g.bandAtHalfSpread = floor > ls.uncertainty;
     g.uncertainty = std::max(ls.uncertainty, floor);
     g.gci = g.uncertainty / bandScale(f[0]);
-    g.note += fromAll + (floor > ls.uncertainty ? " (raised to half the three finest's spread)" : "");
+    g.note += fromAll + (g.bandAtHalfSpread ? " (raised to half the three finest's spread)" : "");
     return g;
   }
   if (ls.uncertainty > g.uncertainty) {
     g.basis = UncertaintyBasis::LeastSquares;
     g.bandOrder = ls.estimateOrder;
+    g.bandAtHalfSpread = false;
     g.uncertainty = ls.uncertainty;
     g.gci = ls.uncertainty / bandScale(f[0]);
     g.note += fromAll;
@@ -178,6 +182,25 @@ const char* uncertaintyBasisName(UncertaintyBasis basis) {
     case UncertaintyBasis::None: break;
   }
   return "none";
+}
+
+std::string describeBand(const GridConvergence& g, std::size_t levels) {
+  char own[96] = "";
+  switch (g.basis) {
+    case UncertaintyBasis::None: return "";
+    case UncertaintyBasis::ObservedOrder:
+      std::snprintf(own, sizeof own, "GCI band (observed order %.3g, factor of safety 1.25)", g.order);
+      break;
+    case UncertaintyBasis::FormalFallback:
+      std::snprintf(own, sizeof own, "fallback band (order %.3g, factor of safety 3)", g.bandOrder);
+      break;
+    case UncertaintyBasis::LeastSquares:
+      std::snprintf(own, sizeof own, "least-squares band over %zu levels (factor of safety %.3g)", levels,
+                    g.leastSquares.safetyFactor);
+      break;
+  }
+  if (!g.bandAtHalfSpread) return own;
+  return std::string("half the three finest's spread, wider than the ") + own;
 }
 
 }  // namespace ejecta::verify

@@ -60,6 +60,8 @@ struct GridConvergence {
   double formalOrder = 1.0;           // the method's order the check and the fallback use
   double bandOrder = 0.0;             // the order the band was computed with (least squares: the fitted one)
   UncertaintyBasis basis = UncertaintyBasis::None;
+  bool bandAtHalfSpread = false;      // oscillating: the band is half the three finest's spread,
+                                      // which the basis's own band fell short of
   LeastSquaresUncertainty leastSquares;  // over all levels (available with four or more)
 };
 
@@ -73,5 +75,12 @@ GridConvergence gridConvergence(std::vector<double> spacings, std::vector<double
 
 // "observed order" / "formal-order fallback" / "least squares" / "none": for outputs.
 const char* uncertaintyBasisName(UncertaintyBasis basis);
+
+// What the band is, for labels: "GCI band (observed order 1.9, factor of safety 1.25)",
+// "fallback band (order 1, factor of safety 3)", "least-squares band over 5 levels (factor of
+// safety 3)", or, where half the three finest's spread was the wider, that ("half the three
+// finest's spread, wider than the fallback band (...)"); "" without a band. `levels`: how many
+// went in.
+std::string describeBand(const GridConvergence& g, std::size_t levels);
 
 }  // namespace ejecta::verify

@@ -3,6 +3,7 @@
 // --key values (their units kept); the study runs coarsest first, reads back levels already
 // run, and names the numbers a summary has when a quantity is not among them.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <filesystem>
@@ -94,6 +95,25 @@ TEST(ConvergenceStudy, RunsCoarsestFirstAndReadsBackWhatIsDone) {
         << what;
     EXPECT_NE(what.find("gauge_mid_peak_pressure_Pa"), std::string::npos) << what;
     EXPECT_NE(what.back(), ' ') << what;
+  }
+  // Summaries with no extras: the list is the fixed four, with no separator after the last.
+  for (const fs::directory_entry& level : fs::directory_iterator(o.outDir)) {
+    if (level.path().filename().string().rfind("level_", 0) != 0) continue;
+    const fs::path summaryPath = level.path() / "summary.json";
+    std::ifstream in(summaryPath);
+    nlohmann::json summary = nlohmann::json::parse(in);
+    in.close();
+    summary["extras"] = nlohmann::json::object();
+    std::ofstream(summaryPath) << summary.dump();
+  }
+  try {
+    runConvergenceStudy(sodWithGauge(), "sod.toml", o);
+    FAIL() << "a missing quantity was accepted";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    const std::string fixed = "its numbers: energy_relative_error, wall_seconds, particles, steps";
+    ASSERT_GE(what.size(), fixed.size()) << what;
+    EXPECT_EQ(what.substr(what.size() - fixed.size()), fixed) << what;
   }
   o.factors = {1.0, 1.0};
   EXPECT_THROW(runConvergenceStudy(sodWithGauge(), "sod.toml", o), std::invalid_argument);

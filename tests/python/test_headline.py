@@ -125,6 +125,33 @@ def test_the_least_squares_band_is_named(tmp_path):
     assert rows[3].startswith("| share | 92.0% ± 1.84% (least squares, 4 levels) | 93.0% | 1.10 |"), rows[3]
 
 
+def test_a_band_at_half_the_spread_and_past_the_quantitys_range_says_so(tmp_path):
+    # Where ejecta converge raised the band to half the three finest's spread, the row names that,
+    # not the fit's or the fallback's factor of safety; and where the band runs past what the
+    # quantity can be (a share of 0 to 100%), the row gives the interval it leaves.
+    ranged = STUDY.replace("0.7071]", "0.7071, 0.5]").replace("scale = 100", "scale = 100\n  minimum = 0\n  maximum = 100")
+    manifest = headline.load_manifest(write_manifest(tmp_path / "m.toml", ranged))
+    fake_study(tmp_path / "out", manifest["study"][0], [
+        {"quantity": "crater_depth_m", "finest": 7.707, "valid": True, "observed_order": 6.4,
+         "asymptotic": False, "uncertainty_basis": "least squares", "band_order": 0.8, "gci": 0.1,
+         "uncertainty": 0.25, "band_at_half_spread": True, "least_squares": {"safety_factor": 3.0},
+         "note": "oscillatory convergence"},
+        {"quantity": "target_share_of_impactor_energy", "finest": 0.9204, "valid": True, "observed_order": 0.2,
+         "asymptotic": False, "uncertainty_basis": "formal-order fallback", "band_order": 0.2, "gci": 0.2,
+         "uncertainty": 0.184, "band_at_half_spread": False, "note": "the observed order is below 0.5"}])
+    rows = headline.table(manifest, str(tmp_path / "out")).splitlines()
+    assert rows[2].startswith("| crater depth | 7.71 m ± 0.250 m (half the three finest's spread, wider than the "
+                              "least-squares band over 4 levels, factor of safety 3; not settled: 7.50 m to 8.00 m "
+                              "over the three finest) |"), rows[2]
+    assert rows[3].startswith("| share | 92.0% ± 18.4% (fallback band, order 0.2, factor of safety 3; not settled: "
+                              "90.5% to 91.0% over the three finest; the band clipped to what the quantity can be: "
+                              "73.6% to 100%) |"), rows[3]
+    # In the asymptotic range too (a depth cannot be negative).
+    q = {"finest": 1.0, "uncertainty": 1.5}
+    assert headline.clipped(q, {"minimum": 0, "unit": "m"}) == "; the band clipped to what the quantity can be: 0 m to 2.50 m"
+    assert headline.clipped(q, {"minimum": -1}) == ""
+
+
 def test_a_study_not_run_says_how_to_run_it(tmp_path):
     manifest = headline.load_manifest(write_manifest(tmp_path / "m.toml", STUDY))
     text = headline.table(manifest, str(tmp_path / "nothing"))
@@ -249,6 +276,10 @@ def test_odd_numbers_and_files(tmp_path):
      'quantity = "q"\n', "set: an array of texts"),
     ('[[study]]\nid = "a"\nscene = "s"\nfactors = [1, 0.7, 0.5]\n[[study.answer]]\nlabel = "x"\n', "no 'quantity'"),
     ('[[open]]\nlabel = "x"\n', "no 'why'"),
+    ('[[study]]\nid = "a"\nscene = "s"\nfactors = [1, 0.7, 0.5]\n[[study.answer]]\nlabel = "x"\nquantity = "q"\n'
+     'maximum = "100"\n', "maximum is a number"),
+    ('[[study]]\nid = "a"\nscene = "s"\nfactors = [1, 0.7, 0.5]\n[[study.answer]]\nlabel = "x"\nquantity = "q"\n'
+     'minimum = 1\nmaximum = 0\n', "minimum must be below maximum"),
     ('[[study]\n', "m.toml"),
 ])
 def test_bad_manifests_name_the_file_and_the_key(tmp_path, text, message):

@@ -114,9 +114,19 @@ TEST(GridConvergence, OscillatingChangesGetABandAtLeastHalfTheirSpread) {
   EXPECT_TRUE(g.oscillatory);
   EXPECT_EQ(g.basis, UncertaintyBasis::FormalFallback);
   EXPECT_NEAR(g.uncertainty, 0.947e-3, 1e-12);
+  // The labels say which band it is: the spread's, not Roache's with its factor of safety.
+  EXPECT_TRUE(g.bandAtHalfSpread);
+  EXPECT_EQ(describeBand(g, 3),
+            "half the three finest's spread, wider than the fallback band (order 1, factor of safety 3)");
   // With the spread small, Roache's band governs: 1.0, 1.01, 0.995 at h = 1, 2, 4: 3 x 0.01 / 1.
   const GridConvergence small = gridConvergence({1.0, 2.0, 4.0}, {1.0, 1.01, 0.995});
   EXPECT_NEAR(small.uncertainty, 0.03, 1e-12);
+  EXPECT_FALSE(small.bandAtHalfSpread);
+  EXPECT_EQ(describeBand(small, 3), "fallback band (order 1, factor of safety 3)");
+  // Celik's band in the asymptotic range (phi = 1 + h, order 1) and no band at all.
+  EXPECT_EQ(describeBand(gridConvergence({1.0, 2.0, 4.0}, {2.0, 3.0, 5.0}), 3),
+            "GCI band (observed order 1, factor of safety 1.25)");
+  EXPECT_EQ(describeBand(gridConvergence({1.0, 2.0, 4.0}, {1.0, 1.0, 2.0}), 3), "");
 }
 
 TEST(GridConvergence, ASlowerOrderIsNotSpedUpAndNoOrderStillGetsABand) {

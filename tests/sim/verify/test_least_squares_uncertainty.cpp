@@ -137,6 +137,24 @@ TEST(LeastSquaresUncertainty, TheFollowerFluxStudySeesTheScatterOfItsLevels) {
   EXPECT_LT(seven.uncertainty, fallback / 3.0);
 }
 
+TEST(LeastSquaresUncertainty, AnOscillationWiderThanTheFitKeepsHalfItsSpread) {
+  // Five levels near 1 + 0.1 h whose finest three alternate (1.127, 1.118, 1.189): the fit over
+  // all five gives +-0.0284, less than half the three finest's spread, 0.0355, which is the band
+  // (Stern et al. 2001's half amplitude), and the labels say so rather than quote the fit's
+  // factor of safety.
+  const std::vector<double> h = {1.0, 1.4142, 2.0, 2.8284, 4.0};
+  const GridConvergence g = gridConvergence(h, {1.127, 1.118, 1.189, 1.251, 1.437});
+  ASSERT_TRUE(g.leastSquares.available) << g.leastSquares.note;
+  EXPECT_TRUE(g.oscillatory);
+  EXPECT_EQ(g.basis, UncertaintyBasis::LeastSquares);
+  EXPECT_LT(g.leastSquares.uncertainty, 0.0355);
+  EXPECT_NEAR(g.uncertainty, 0.0355, 1e-12);
+  EXPECT_TRUE(g.bandAtHalfSpread);
+  EXPECT_NE(g.note.find("raised to half the three finest's spread"), std::string::npos) << g.note;
+  EXPECT_EQ(describeBand(g, h.size()),
+            "half the three finest's spread, wider than the least-squares band over 5 levels (factor of safety 3)");
+}
+
 TEST(LeastSquaresUncertainty, GridConvergenceKeepsTheWiderBandAndChecksTheRange) {
   // phi = 1 - 3 h^1.3 and a coarsest value far off it: the three finest alone are in the
   // asymptotic range (p = 1.3, Celik's band), but the four together have no order (the fit runs
@@ -168,6 +186,8 @@ TEST(LeastSquaresUncertainty, GridConvergenceKeepsTheWiderBandAndChecksTheRange)
   EXPECT_EQ(first.basis, UncertaintyBasis::LeastSquares);
   EXPECT_DOUBLE_EQ(first.leastSquares.safetyFactor, 3.0);
   EXPECT_GT(first.uncertainty, 1.25 * 3.0 * std::pow(0.1, 1.3));
+  EXPECT_FALSE(first.bandAtHalfSpread);
+  EXPECT_EQ(describeBand(first, h.size()), "least-squares band over 4 levels (factor of safety 3)");
   EXPECT_STREQ(uncertaintyBasisName(UncertaintyBasis::LeastSquares), "least squares");
   // Two equal finest values give three levels no order and no band; with a fourth the fit over
   // all of them gives one.
