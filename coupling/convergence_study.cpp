@@ -236,8 +236,8 @@ std::string levelsCsv(const ConvergenceResult& r) {
 
 std::string convergenceCsv(const ConvergenceResult& r) {
   CsvWriter csv({"quantity", "finest", "observed_order", "extrapolated", "gci", "uncertainty",
-                 "uncertainty_basis", "band_order", "asymptotic", "oscillatory", "ls_order", "ls_standard_deviation",
-                 "ls_uncertainty", "note"});
+                 "uncertainty_basis", "band_order", "band_at_half_spread", "asymptotic", "oscillatory", "ls_order",
+                 "ls_standard_deviation", "ls_uncertainty", "note"});
   for (const QuantityConvergence& q : r.quantities) {
     const verify::GridConvergence& g = q.convergence;
     csv.text(q.name).number(r.levels.back().values.at(q.name));
@@ -251,7 +251,7 @@ std::string convergenceCsv(const ConvergenceResult& r) {
     csv.text(verify::uncertaintyBasisName(g.basis));
     if (g.basis != verify::UncertaintyBasis::None) csv.number(g.bandOrder);
     else csv.text("");
-    csv.flag(g.asymptotic).flag(g.oscillatory);
+    csv.flag(g.bandAtHalfSpread).flag(g.asymptotic).flag(g.oscillatory);
     // Eca & Hoekstra's fit over all levels, where there are four or more.
     const verify::LeastSquaresUncertainty& ls = g.leastSquares;
     if (ls.available) csv.number(ls.order).number(ls.standardDeviation).number(ls.uncertainty);

@@ -72,7 +72,7 @@ TEST(ConvergenceStudy, RunsCoarsestFirstAndReadsBackWhatIsDone) {
   // Each quantity's row says what its band rests on (bench/headline.py reads the same names).
   const std::string table = convergenceCsv(r);
   EXPECT_NE(table.find("quantity,finest,observed_order,extrapolated,gci,uncertainty,uncertainty_basis,band_order,"
-                       "asymptotic,oscillatory,ls_order,ls_standard_deviation,ls_uncertainty,note"),
+                       "band_at_half_spread,asymptotic,oscillatory,ls_order,ls_standard_deviation,ls_uncertainty,note"),
             std::string::npos);
   for (const QuantityConvergence& q : r.quantities)
     EXPECT_NE(table.find(q.name + ","), std::string::npos);

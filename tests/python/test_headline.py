@@ -129,7 +129,8 @@ def test_a_band_at_half_the_spread_and_past_the_quantitys_range_says_so(tmp_path
     # Where ejecta converge raised the band to half the three finest's spread, the row names that,
     # not the fit's or the fallback's factor of safety; and where the band runs past what the
     # quantity can be (a share of 0 to 100%), the row gives the interval it leaves.
-    ranged = STUDY.replace("0.7071]", "0.7071, 0.5]").replace("scale = 100", "scale = 100\n  minimum = 0\n  maximum = 100")
+    ranged = STUDY.replace("0.7071]", "0.7071, 0.5]").replace(
+        "scale = 100", "scale = 100\n  minimum = 0\n  maximum = 100")
     manifest = headline.load_manifest(write_manifest(tmp_path / "m.toml", ranged))
     fake_study(tmp_path / "out", manifest["study"][0], [
         {"quantity": "crater_depth_m", "finest": 7.707, "valid": True, "observed_order": 6.4,
@@ -148,7 +149,8 @@ def test_a_band_at_half_the_spread_and_past_the_quantitys_range_says_so(tmp_path
                               "73.6% to 100%) |"), rows[3]
     # In the asymptotic range too (a depth cannot be negative).
     q = {"finest": 1.0, "uncertainty": 1.5}
-    assert headline.clipped(q, {"minimum": 0, "unit": "m"}) == "; the band clipped to what the quantity can be: 0 m to 2.50 m"
+    assert headline.clipped(q, {"minimum": 0, "unit": "m"}) == \
+        "; the band clipped to what the quantity can be: 0 m to 2.50 m"
     assert headline.clipped(q, {"minimum": -1}) == ""
 
 
