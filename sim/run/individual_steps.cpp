@@ -217,7 +217,8 @@ void Simulation::stepIndividually(double limit) {
   evaluateDerivatives(&active);
 
   bins_->finishSteps(p_, leapfrog_, active, dim);
-  // The others' state is that of this sub-step's evaluation already.
+  // The others' state is that of this sub-step's evaluation already, or (not read by it) of the
+  // last one that read them: evaluateSkipped brings them up to date for a reader of all.
   evaluateEquationOfState(&activeMask_);
   for (const auto& package : packages_) package->finalize(p_, packageContext(&activeMask_));
   time_ = stateTime_;

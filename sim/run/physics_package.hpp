@@ -10,11 +10,14 @@
 // The life cycle of one step (sim/run/simulation.cpp), each hook over the packages in the order
 // they joined:
 //   limitKicks -> [leapfrog predict] -> afterDrift -> [pair passes, equation of state]
-//   -> updateState -> [force pass] -> evaluateDerivatives -> [leapfrog correct, equation of
+//   -> updateState -> (afterEquationOfState) -> [force pass] -> evaluateDerivatives -> [leapfrog correct, equation of
 //   state] -> updateState -> finalize -> timestep
 // With individual time steps (sim/run/time_bins.hpp) the same cycle runs at every sub-step on
 // every particle's predicted state, the derivative hooks and finalize acting only on
-// PackageContext::active.
+// PackageContext::active; on one rank the equation of state and updateState of the predicted
+// state run only for the particles the sub-step reads (the active ones, their partners, those a
+// gauge reads: PackageContext::active holds them then), so a particle's updates happen at the
+// sub-steps where it is read, not at every one.
 // initialise() and a delayed deposit's firing evaluate a state without stepping: updateState ->
 // evaluateDerivatives -> timestep only. A package that keeps state between steps belongs to one
 // Simulation.
@@ -57,9 +60,15 @@ class PhysicsPackage {
   virtual void limitKicks(Leapfrog&, const PackageContext&) {}
   // After the drift, on the predicted state, before the pair passes see it.
   virtual void afterDrift(ParticleSet&, const PackageContext&) {}
-  // After the equation of state of every evaluated state (pressures and sound speeds set); with
-  // individual time steps also after the end of a sub-step for its active particles alone
-  // (c.active): an update must touch only those then (it is not idempotent: it scales P or cs).
+  // Individual time steps: after the equation of state of a sub-step's predicted state and
+  // every package's updateState (the pressure complete: burn, damage, distention), for the
+  // particles c.active selects (nullptr: all); not for a stored state (initialise, a deposit's
+  // firing).
+  virtual void afterEquationOfState(ParticleSet&, const PackageContext&) {}
+  // After the equation of state of every evaluated state (pressures and sound speeds set) for
+  // the particles it evaluated: with individual time steps those c.active selects (the read ones
+  // of a predicted state; after the end of a sub-step its active ones), and an update must touch
+  // only those (it is not idempotent: it scales P or cs).
   virtual void updateState(ParticleSet&, const PackageContext&) {}
   // The rates of the package's evolved fields for the real particles, after the pair passes.
   virtual void evaluateDerivatives(ParticleSet&, const PackageContext&) {}

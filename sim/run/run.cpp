@@ -331,6 +331,7 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
     info.step = sim.stepCount();
     info.dtNext = sim.dtNext();
     info.wallSeconds = wall();
+    sim.evaluateSkipped();  // between synchronisation points: an interrupt or a failure
     if (snapshots) outputs.writeSnapshot(sim, info);
     // On every rank: hooks splat their own particles and merge, or gather what they draw.
     if (options.onOutput) options.onOutput(sim, info, final);
@@ -380,8 +381,11 @@ RunOutcome drive(Simulation& sim, const RunOptions& options, RunOutputs& outputs
                                                        sim.depositFirings()));
       }
       outputs.logEnergy(sim, info.initialEnergy);
-      outputs.logGauges(sim);
-      if (options.observer) options.observer(sim);
+      outputs.logGauges(sim);  // (the particles it reads are evaluated)
+      if (options.observer) {
+        sim.evaluateSkipped();  // an observer may read every particle
+        options.observer(sim);
+      }
       progress.update(sim, wall());
       if (reached(sim.time(), info.nextOutputTime) && !reached(sim.time(), tEnd)) {
         info.nextOutputTime = interval > 0 ? info.nextOutputTime + interval : tEnd;

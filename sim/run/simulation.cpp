@@ -135,7 +135,7 @@ Simulation::Simulation(Scene scene, ParticleSet particles, MaterialTable materia
   if (materials_.anyPhaseChanges()) addPackage(std::make_shared<PhaseFractionsPackage>());
   if (p_.hasBurn()) addPackage(std::make_shared<ProgrammedBurnPackage>(std::move(burn), scene_.sph.eta));
   if (materials_.anyStrength()) {
-    addPackage(std::make_shared<StrengthPackage>(ws_.dim));
+    addPackage(std::make_shared<StrengthPackage>(ws_.dim, scene_.time.stepping == Stepping::Individual));
     ws_.shearModulus.assign(materials_.size(), 0.0);
     ws_.yieldCarriesDamage.assign(materials_.size(), 0);
     for (std::size_t m = 0; m < materials_.size(); ++m)
@@ -348,6 +348,11 @@ void Simulation::sortForLocality() {
     for (std::size_t i = 0; i < n; ++i) moved[i] = ws_.neighbourCount[order[i]];
     ws_.neighbourCount = std::move(moved);
   }
+  if (readMask_.size() == n) {  // evaluateSkipped may still be called
+    ParticleMask moved(n);
+    for (std::size_t i = 0; i < n; ++i) moved[i] = readMask_[order[i]];
+    readMask_ = std::move(moved);
+  }
 }
 
 void Simulation::evaluateEquationOfState(const ParticleMask* only) {
@@ -408,7 +413,26 @@ void Simulation::evaluateDerivatives(const std::vector<std::size_t>* active) {
     std::copy(hBefore.begin(), hBefore.end(), p_.h.begin());
     margin *= 1.5;
   }
-  evaluateEquationOfState();
+  // Individual steps on one rank: the pairs come first, so that the equation of state runs only
+  // for the particles this evaluation reads (a blast's quiet gas is not re-evaluated each
+  // sub-step). Other ranks' reads would need the read sets sent with the halos: every particle
+  // there.
+  const bool restricted = active && !distributed;
+  if (restricted) {
+    // The density pass may have moved the real particles' h; the pairs read the images' too.
+    for (std::size_t g = 0; g < boundaries_.numBoundaryGhosts(); ++g)
+      p_.h[p_.numReal + g] = p_.h[p_.ghostSource[g]];
+    buildEvaluatedPairs(active);
+    markReadParticles(*active);
+    evaluateEquationOfState(&readMask_);
+  } else {
+    readMask_.clear();
+    evaluateEquationOfState();
+  }
+  if (active) {
+    const PackageContext context = packageContext(restricted ? &readMask_ : nullptr);
+    for (const auto& package : packages_) package->afterEquationOfState(p_, context);
+  }
   // Ghosts first (their sources are here), then the halos (which include other ranks' ghosts).
   boundaries_.refreshGhosts(p_);
   const bool reconstruction = scene_.sph.viscosityReconstruction != ViscosityReconstruction::None;
@@ -430,22 +454,7 @@ void Simulation::evaluateDerivatives(const std::vector<std::size_t>* active) {
   // The pairs are found from the halos' h: where the density pass sets it, it comes first,
   // alone (8 bytes a halo); the rest of their values travel during the force pass.
   if (distributed && densityPassSetsSmoothingLength(scene_.sph)) domain_.refreshHaloArray(p_.h, 1);
-  if (active) {
-    // The pairs of the evaluated particles alone, from the widest kernels reaching each cell.
-    ws_.grid.recordReach(p_, kKernelSupport);
-    switch (dim) {
-      case 1: ws_.lists.buildActivePairs<1>(p_, ws_.grid, kKernelSupport, *active); break;
-      case 2: ws_.lists.buildActivePairs<2>(p_, ws_.grid, kKernelSupport, *active); break;
-      default: ws_.lists.buildActivePairs<3>(p_, ws_.grid, kKernelSupport, *active); break;
-    }
-  } else switch (dim) {
-    case 1: ws_.lists.findGhostGathers<1>(p_, ws_.grid, kKernelSupport);
-            ws_.lists.buildPairs<1>(p_, kKernelSupport); break;
-    case 2: ws_.lists.findGhostGathers<2>(p_, ws_.grid, kKernelSupport);
-            ws_.lists.buildPairs<2>(p_, kKernelSupport); break;
-    default: ws_.lists.findGhostGathers<3>(p_, ws_.grid, kKernelSupport);
-             ws_.lists.buildPairs<3>(p_, kKernelSupport); break;
-  }
+  if (!restricted) buildEvaluatedPairs(active);
   if (active && reconstruction && scene_.sph.dissipation == Dissipation::Riemann) {
     // The pairs read their inactive partners' gradients: re-evaluated at the present state
     // (sim/sph/velocity_gradient_refresh.hpp; the Riemann dissipation runs on one rank).
@@ -474,6 +483,65 @@ void Simulation::evaluateDerivatives(const std::vector<std::size_t>* active) {
   const PackageContext context = packageContext(active ? &activeMask_ : nullptr);
   for (const auto& package : packages_) package->evaluateDerivatives(p_, context);
   measureClosingSpeeds(active);
+}
+
+void Simulation::buildEvaluatedPairs(const std::vector<std::size_t>* active) {
+  const int dim = ws_.dim;
+  if (active) {
+    // The pairs of the evaluated particles alone, from the widest kernels reaching each cell.
+    ws_.grid.recordReach(p_, kKernelSupport);
+    switch (dim) {
+      case 1: ws_.lists.buildActivePairs<1>(p_, ws_.grid, kKernelSupport, *active); break;
+      case 2: ws_.lists.buildActivePairs<2>(p_, ws_.grid, kKernelSupport, *active); break;
+      default: ws_.lists.buildActivePairs<3>(p_, ws_.grid, kKernelSupport, *active); break;
+    }
+  } else switch (dim) {
+    case 1: ws_.lists.findGhostGathers<1>(p_, ws_.grid, kKernelSupport);
+            ws_.lists.buildPairs<1>(p_, kKernelSupport); break;
+    case 2: ws_.lists.findGhostGathers<2>(p_, ws_.grid, kKernelSupport);
+            ws_.lists.buildPairs<2>(p_, kKernelSupport); break;
+    default: ws_.lists.findGhostGathers<3>(p_, ws_.grid, kKernelSupport);
+             ws_.lists.buildPairs<3>(p_, kKernelSupport); break;
+  }
+}
+
+void Simulation::markReadParticles(const std::vector<std::size_t>& active) {
+  readMask_.assign(p_.numReal, 0);
+  // Each active particle and its partners; an image stands for its source. One thread: a
+  // particle is the partner of several.
+  for (std::size_t i : active) {
+    readMask_[i] = 1;
+    for (std::uint32_t j : ws_.lists.pairs(i)) readMask_[j < p_.numReal ? j : p_.ghostSource[j - p_.numReal]] = 1;
+  }
+  // The gauges read every particle whose support reaches them (sim/sources/gauges.cpp), after
+  // each sub-step.
+  const int dim = ws_.dim;
+  for (const GaugeSpec& gauge : scene_.gauges) {
+    const double reach = ws_.grid.reachInto(gauge.position.data());
+    gaugeCandidates_.clear();
+    switch (dim) {
+      case 1: ws_.grid.queryReaching<1>(gauge.position.data(), reach, gaugeCandidates_); break;
+      case 2: ws_.grid.queryReaching<2>(gauge.position.data(), reach, gaugeCandidates_); break;
+      default: ws_.grid.queryReaching<3>(gauge.position.data(), reach, gaugeCandidates_); break;
+    }
+    for (std::uint32_t j : gaugeCandidates_) {
+      if (j >= p_.numReal) continue;  // the gauges read real particles only
+      double r2 = 0.0;
+      for (int d = 0; d < dim; ++d) r2 += (p_.x[d][j] - gauge.position[d]) * (p_.x[d][j] - gauge.position[d]);
+      const double support = kKernelSupport * p_.h[j];
+      if (r2 < support * support) readMask_[j] = 1;
+    }
+  }
+}
+
+void Simulation::evaluateSkipped() {
+  if (readMask_.empty()) return;
+  ++stateVersion_;
+  for (unsigned char& read : readMask_) read = read ? 0 : 1;  // now: the skipped ones
+  evaluateEquationOfState(&readMask_);
+  const PackageContext context = packageContext(&readMask_);
+  for (const auto& package : packages_) package->afterEquationOfState(p_, context);
+  readMask_.clear();
 }
 
 void Simulation::refuseUnbuiltSphOptions() const {

@@ -133,6 +133,13 @@ class Simulation {
   using ParticleFilter = std::function<bool(const ParticleSet&, std::size_t)>;
   ParticleSet gatherParticlesWhere(const ParticleFilter& keep) const;
   const ParticleSet& particlesNear(std::span<const std::array<double, 3>> points);
+  // Individual steps on one rank evaluate the equation of state (and the packages' state
+  // updates) only where a sub-step reads it: its active particles, their partners and the
+  // particles a gauge reads. A reader of every particle between synchronisation points (an
+  // evolving thermal pass, a snapshot after an interrupt or a failure) calls this first to bring
+  // the others' pressure, sound speed and temperature to the present state. Cheap when nothing
+  // was skipped.
+  void evaluateSkipped();
 
  private:
   // Ghosts, halos, the density pass, the equation of state and the force pass; with `active`
@@ -142,6 +149,11 @@ class Simulation {
   // `only` (individual time steps): just the particles it selects (every package's
   // updateState must honour PackageContext::active then: the updates are not idempotent).
   void evaluateEquationOfState(const ParticleMask* only = nullptr);
+  // The pairs of the force pass: every real particle's, or (individual steps) the active ones'.
+  void buildEvaluatedPairs(const std::vector<std::size_t>* active);
+  // readMask_: the active particles, their partners (an image's source for the image) and the
+  // particles whose support reaches a gauge.
+  void markReadParticles(const std::vector<std::size_t>& active);
   void computeNextTimestep();
   // A particle in no pair (no real, ghost or halo particle within either's kernel) exchanges
   // nothing, so its sound speed sets no step: a fragment flung clear and rarefied under
@@ -239,6 +251,10 @@ class Simulation {
   Leapfrog leapfrog_;  // and its half-step state
   std::optional<TimeBins> bins_;  // individual time steps; empty: global steps
   ParticleMask activeMask_;       // the particles of the present sub-step
+  // The particles whose equation of state the last evaluation ran (individual steps on one rank;
+  // empty: all of them), until evaluateSkipped.
+  ParticleMask readMask_;
+  std::vector<std::uint32_t> gaugeCandidates_;  // markReadParticles' scratch
   std::vector<double> closing_;   // measureClosingSpeeds' values [m/s], per real particle
   std::vector<std::shared_ptr<PhysicsPackage>> packages_;
   std::shared_ptr<FracturePackage> fracture_;  // also in packages_; owns the flaws

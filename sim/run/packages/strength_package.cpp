@@ -10,7 +10,11 @@ void StrengthPackage::registerFields(ParticleSet& p) {
 }
 
 void StrengthPackage::afterDrift(ParticleSet& p, const PackageContext& c) {
-  applyPlasticity(p, c.materials, false);
+  if (!returnAfterEquationOfState_) applyPlasticity(p, c.materials, false);
+}
+
+void StrengthPackage::afterEquationOfState(ParticleSet& p, const PackageContext& c) {
+  if (returnAfterEquationOfState_) applyPlasticity(p, c.materials, false, c.active);
 }
 
 void StrengthPackage::updateState(ParticleSet& p, const PackageContext& c) {
