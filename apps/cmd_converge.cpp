@@ -139,12 +139,16 @@ int convergeCommand(const ConvergeArgs& args) {
     if (g.valid) std::snprintf(order, sizeof order, "observed order %.3g: ", g.order);
     const std::string note = g.note.empty() ? "" : "; " + std::string(order) + g.note;
     const std::string band = verify::describeBand(g, r.levels.size());
-    if (g.asymptotic)
+    if (g.asymptotic) {
       // Celik et al. (2008): the GCI band is the finest solution's uncertainty, so it is printed
-      // about the finest value; the extrapolation is the estimate it brackets.
-      std::printf("  %s: finest %.6g +- %.3g (%.3g%%: the %s), extrapolated %.6g, observed order %.3g\n",
-                  q.name.c_str(), fine, g.uncertainty, 100 * g.gci, band.c_str(), g.extrapolated, g.order);
-    else if (g.basis != verify::UncertaintyBasis::None)
+      // about the finest value; the extrapolation is the estimate it brackets. (The GCI band's
+      // name gives the observed order already.)
+      char observed[48] = "";
+      if (g.basis != verify::UncertaintyBasis::ObservedOrder)
+        std::snprintf(observed, sizeof observed, ", observed order %.3g", g.order);
+      std::printf("  %s: finest %.6g +- %.3g (%.3g%%: the %s), extrapolated %.6g%s\n", q.name.c_str(), fine,
+                  g.uncertainty, 100 * g.gci, band.c_str(), g.extrapolated, observed);
+    } else if (g.basis != verify::UncertaintyBasis::None)
       // Not in the asymptotic range: no extrapolation is claimed, only the wider band.
       std::printf("  %s: finest %.6g +- %.3g (%.3g%%: the %s)%s\n", q.name.c_str(), fine, g.uncertainty,
                   100 * g.gci, band.c_str(), note.c_str());

@@ -329,7 +329,8 @@ def answer_row(study, answer, result):
         value = "%s ± %s" % (fine, number(q["uncertainty"] * scale, unit))
         # Eca & Hoekstra's band over all levels where it is wider than Celik's on the three finest.
         remarks = ["least squares, %d levels" % len(levels)] if least_squares else []
-        remarks += [clipped(q, answer)[2:]] if clipped(q, answer) else []
+        clip = clipped(q, answer)
+        remarks += [clip[2:]] if clip else []
         if remarks:
             value += " (%s)" % "; ".join(remarks)
         extrapolated = number(q["extrapolated"] * scale, unit)

@@ -165,8 +165,7 @@ GridConvergence gridConvergence(std::vector<double> spacings, std::vector<double
   }
   if (ls.uncertainty > g.uncertainty) {
     g.basis = UncertaintyBasis::LeastSquares;
-    g.bandOrder = ls.estimateOrder;
-    g.bandAtHalfSpread = false;
+    g.bandOrder = ls.estimateOrder;  // (not oscillating: the band was not raised to half the spread)
     g.uncertainty = ls.uncertainty;
     g.gci = ls.uncertainty / bandScale(f[0]);
     g.note += fromAll;
