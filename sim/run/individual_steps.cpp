@@ -107,7 +107,10 @@ void Simulation::rebin(const std::vector<std::size_t>& ended) {
       floor[k] = bins_->floorFrom(finest);
     }
   }
-  if (!domain_.comm().allTrue(bins_->beginSteps(p_, leapfrog_, ended, floor))) checkHealth(0.0);
+  if (!domain_.comm().allTrue(bins_->beginSteps(p_, leapfrog_, ended, floor))) {
+    evaluateSkipped();  // the diagnosis reads every particle
+    checkHealth(0.0);
+  }
   if (!bins_->limiting()) return;
   // Wake the neighbours whose step in progress is too long beside the new bins: each takes the
   // finest bin any such neighbour asks of it (a max: the order of the loop does not matter).
@@ -177,6 +180,9 @@ void Simulation::wakeFromHalos(std::vector<int>& wanted) {
 
 void Simulation::stepIndividually(double limit) {
   ++stateVersion_;
+  // Nothing is evaluated at the state this sub-step goes to until its evaluation marks what it
+  // read (evaluateSkipped, after a failure on the way, evaluates every particle).
+  readMask_.assign(p_.numReal, 0);
   if (bins_->synchronised()) {
     startBlock(limit);
   } else if (limit < bins_->timeAt(TimeBins::kBlockTicks) * (1.0 - 1e-12)) {

@@ -10,14 +10,15 @@
 // The life cycle of one step (sim/run/simulation.cpp), each hook over the packages in the order
 // they joined:
 //   limitKicks -> [leapfrog predict] -> afterDrift -> [pair passes, equation of state]
-//   -> updateState -> (afterEquationOfState) -> [force pass] -> evaluateDerivatives -> [leapfrog correct, equation of
-//   state] -> updateState -> finalize -> timestep
+//   -> updateState -> (individual steps: afterEquationOfState) -> [force pass]
+//   -> evaluateDerivatives -> [leapfrog correct, equation of state] -> updateState -> finalize
+//   -> timestep
 // With individual time steps (sim/run/time_bins.hpp) the same cycle runs at every sub-step on
-// every particle's predicted state, the derivative hooks and finalize acting only on
-// PackageContext::active; on one rank the equation of state and updateState of the predicted
-// state run only for the particles the sub-step reads (the active ones, their partners, those a
-// gauge reads: PackageContext::active holds them then), so a particle's updates happen at the
-// sub-steps where it is read, not at every one.
+// the particles' predicted state, the derivative hooks and finalize acting only on
+// PackageContext::active. On one rank the equation of state, updateState and
+// afterEquationOfState of the predicted state run only for the particles the sub-step reads
+// (the active ones, their partners, those a gauge reads, and those a package marks with
+// markEvaluatedEverySubStep: PackageContext::active holds them then).
 // initialise() and a delayed deposit's firing evaluate a state without stepping: updateState ->
 // evaluateDerivatives -> timestep only. A package that keeps state between steps belongs to one
 // Simulation.
@@ -40,9 +41,11 @@ struct PackageContext {
   const MaterialTable& materials;
   int dimension;  // of the particle positions: 1, 2 (planar and RZ) or 3
   double time;    // of the state the hook sees [s]
-  // Individual time steps (sim/run/time_bins.hpp): the particles whose step ends at `time`, the
-  // only ones evaluateDerivatives and finalize may change (the others keep the rates their step
-  // started with, and their state is a prediction). nullptr: every particle (global steps).
+  // Individual time steps (sim/run/time_bins.hpp): for evaluateDerivatives and finalize the
+  // particles whose step ends at `time`, the only ones they may change (the others keep the
+  // rates their step started with, and their state is a prediction); for the state hooks of a
+  // predicted state on one rank, the particles the sub-step reads. nullptr: every particle
+  // (global steps, and the predicted state's hooks on several ranks).
   const ParticleMask* active = nullptr;
 };
 
@@ -60,6 +63,11 @@ class PhysicsPackage {
   virtual void limitKicks(Leapfrog&, const PackageContext&) {}
   // After the drift, on the predicted state, before the pair passes see it.
   virtual void afterDrift(ParticleSet&, const PackageContext&) {}
+  // Individual time steps on one rank: adds to `evaluated` the particles whose state update
+  // keeps a history (a running maximum) and so must run at every sub-step, read or not, for the
+  // run not to depend on which sub-steps read them (and to match a run on several ranks, which
+  // evaluates every particle).
+  virtual void markEvaluatedEverySubStep(const ParticleSet&, ParticleMask& /*evaluated*/) const {}
   // Individual time steps: after the equation of state of a sub-step's predicted state and
   // every package's updateState (the pressure complete: burn, damage, distention), for the
   // particles c.active selects (nullptr: all); not for a stored state (initialise, a deposit's

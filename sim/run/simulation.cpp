@@ -348,11 +348,6 @@ void Simulation::sortForLocality() {
     for (std::size_t i = 0; i < n; ++i) moved[i] = ws_.neighbourCount[order[i]];
     ws_.neighbourCount = std::move(moved);
   }
-  if (readMask_.size() == n) {  // evaluateSkipped may still be called
-    ParticleMask moved(n);
-    for (std::size_t i = 0; i < n; ++i) moved[i] = readMask_[order[i]];
-    readMask_ = std::move(moved);
-  }
 }
 
 void Simulation::evaluateEquationOfState(const ParticleMask* only) {
@@ -532,6 +527,7 @@ void Simulation::markReadParticles(const std::vector<std::size_t>& active) {
       if (r2 < support * support) readMask_[j] = 1;
     }
   }
+  for (const auto& package : packages_) package->markEvaluatedEverySubStep(p_, readMask_);
 }
 
 void Simulation::evaluateSkipped() {

@@ -19,6 +19,9 @@ class ProgrammedBurnPackage : public PhysicsPackage {
   // particles lack them cannot burn, and says so.
   void registerFields(ParticleSet& p) override;
   void updateState(ParticleSet& p, const PackageContext& c) override;
+  // The fraction is the largest any evaluation gave (applyProgrammedBurn): an explosive still
+  // burning is evaluated at every sub-step.
+  void markEvaluatedEverySubStep(const ParticleSet& p, ParticleMask& evaluated) const override;
 
  private:
   BurnTable burn_;

@@ -10,9 +10,11 @@
 
 #include "sim/io/snapshot.hpp"
 #include "sim/run/run.hpp"
+#include "sim/run/packages/programmed_burn_package.hpp"
 #include "sim/run/time_bins.hpp"
 #include "sim/sph/kernel.hpp"
 #include "sim/setup/bodies.hpp"
+#include "support/command_line.hpp"    // readTextFile
 #include "support/periodic_blast.hpp"  // runAndResumeFromSnapshot2
 
 namespace fs = std::filesystem;
@@ -173,16 +175,28 @@ TEST(IndividualSteps, RestartAtASnapshotMatchesAnUninterruptedRunBitForBit) {
 // On one rank the equation of state of a sub-step's predicted state runs only where the sub-step
 // reads it (docs/time_steps.md). At every sub-step of the blast, checked against the ideal gas's
 // P = (gamma - 1) rho u of each particle's present state: every particle within reach of one
-// that stepped and every particle the gauge reads holds its present pressure; some particles
+// that stepped (directly or through a periodic image) and every particle the gauge reads holds
+// its present pressure; some particles
 // hold an older one (they were skipped); after evaluateSkipped none does.
 TEST(IndividualSteps, TheEquationOfStateRunsWhereThePairsAndTheGaugesReadIt) {
-  const std::string source = blastScene() + R"(
+  // The blast in a periodic box of half the width (+-0.25 m, a square lattice that tiles it), off
+  // centre, so that the shock crosses the box's edge at x = 0.25 m (at 0.06 s its radius is
+  // ~0.24 m) and the particles beyond it, by x = -0.25 m, are read through their periodic images
+  // (which only the image's source can stand for) before anything near them steps.
+  std::string source = blastScene() + R"(
 [[gauges]]
 name = "ahead"
-position = [0.3, 0.1]
+position = [0.15, 0.05]
 )";
-  const double tEnd = 0.03;
-  Scene scene = parseScene(source, "test_blast.toml", {"time.stepping=individual", "time.t_end=0.03"});
+  const std::vector<std::pair<std::string, std::string>> edits = {
+      {"min = -0.5, max = 0.5", "min = -0.25, max = 0.25"}, {"min = [-0.5, -0.5]", "min = [-0.25, -0.25]"},
+      {"max = [0.5, 0.5]", "max = [0.25, 0.25]"},           {"boundary = \"wall\"", "boundary = \"periodic\""},
+      {"lattice = \"hexagonal\"\n", ""},                 {"center = [0.0, 0.0]", "center = [0.12, 0.0]"}};
+  for (const auto& [from, to] : edits)
+    for (std::size_t at = source.find(from); at != std::string::npos; at = source.find(from))
+      source.replace(at, from.size(), to);
+  const double tEnd = 0.06, period = 0.5;
+  Scene scene = parseScene(source, "test_blast.toml", {"time.stepping=individual", "time.t_end=0.06"});
   MaterialTable materials = MaterialTable::fromScene(scene);
   ParticleSet built = buildParticles(scene, materials);
   Simulation sim(scene, std::move(built), std::move(materials), 2);
@@ -193,7 +207,7 @@ position = [0.3, 0.1]
     return std::abs(p.P[i] - exact) > 1e-12 * std::abs(exact);
   };
   sim.initialise();
-  long subSteps = 0, staleRead = 0, staleAfter = 0, gaugeRead = 0;
+  long subSteps = 0, staleRead = 0, staleAfter = 0, gaugeRead = 0, imageRead = 0;
   std::size_t skipped = 0;
   while (sim.time() < tEnd * (1.0 - 1e-12)) {
     sim.step(tEnd);
@@ -207,14 +221,21 @@ position = [0.3, 0.1]
     for (std::size_t i = 0; i < p.numReal; ++i)
       if (begin[i] == now) stepped.push_back(i);
     for (std::size_t i = 0; i < p.numReal; ++i) {
-      // Pairs reach 2 max(h_i, h_j); 0.98 of it keeps clear of an h the closing kick moved.
-      bool read = false;
+      // Pairs reach 2 max(h_i, h_j); 0.98 of it keeps clear of an h the closing kick moved. A
+      // particle is also read through its images one period away.
+      bool read = false, throughImage = false;
       for (std::size_t j : stepped) {
-        const double dx = p.x[0][i] - p.x[0][j], dy = p.x[1][i] - p.x[1][j];
         const double reach = 0.98 * kKernelSupport * std::max(p.h[i], p.h[j]);
-        read = read || dx * dx + dy * dy < reach * reach;
+        for (double mx : {0.0, -period, period})
+          for (double my : {0.0, -period, period}) {
+            const double dx = p.x[0][i] + mx - p.x[0][j], dy = p.x[1][i] + my - p.x[1][j];
+            if (dx * dx + dy * dy >= reach * reach) continue;
+            if (mx != 0.0 || my != 0.0) throughImage = true;
+            read = true;
+          }
       }
-      const double gx = p.x[0][i] - 0.3, gy = p.x[1][i] - 0.1;
+      if (throughImage) ++imageRead;
+      const double gx = p.x[0][i] - 0.15, gy = p.x[1][i] - 0.05;
       if (gx * gx + gy * gy < 0.98 * 0.98 * kKernelSupport * kKernelSupport * p.h[i] * p.h[i]) {
         read = true;
         ++gaugeRead;
@@ -228,9 +249,79 @@ position = [0.3, 0.1]
   }
   ASSERT_GT(subSteps, 10);
   EXPECT_GT(gaugeRead, subSteps);  // the gauge reads several particles at every sub-step
+  EXPECT_GT(imageRead, 0);         // particles by the box's edges step between synchronisation points
   EXPECT_EQ(staleRead, 0);
   EXPECT_GT(skipped, 0u);
   EXPECT_EQ(staleAfter, 0);
+}
+
+// The particles a sub-step skips are brought up to date for an observer (evaluateSkipped); their
+// updates depend on their present state alone, so the run is the same bits with or without one:
+// the programmed burn (whose fraction keeps its largest value: a burning explosive is evaluated
+// at every sub-step) and the strength's return of the predicted stress (after the equation of
+// state on bins).
+TEST(IndividualSteps, AnObserverLeavesTheRunAsItWas) {
+  struct Case {
+    const char* scene;
+    std::vector<std::string> overrides;
+  };
+  const std::vector<Case> cases = {
+      {"scenes/verification/tnt_bar_1d.toml", {"time.t_end=3 us", "output.snapshot_interval=3 us"}},
+      {"scenes/verification/taylor_bar.toml",
+       {"bodies[0].spacing=0.8 mm", "time.t_end=8 us", "output.snapshot_interval=8 us"}}};
+  for (const Case& c : cases) {
+    std::vector<std::string> overrides = c.overrides;
+    overrides.push_back("time.stepping=individual");
+    const std::string source = test::readTextFile(fs::path(EJECTA_SOURCE_DIR) / c.scene);
+    auto finish = [&](bool observed) {
+      Scene scene = parseScene(source, c.scene, overrides);
+      scene.output.snapshots = false;
+      MaterialTable materials = MaterialTable::fromScene(scene);
+      ParticleSet p = buildParticles(scene, materials);
+      Simulation sim(scene, std::move(p), std::move(materials), 2);
+      RunOptions options;
+      options.threads = 2;
+      if (observed) options.observer = [](const Simulation&) {};
+      const RunOutcome r = runSimulation(sim, options);
+      EXPECT_TRUE(r.ok) << r.error;
+      EXPECT_GT(sim.stepCount(), 20) << c.scene;
+      return sim.particles();
+    };
+    const ParticleSet quiet = finish(false), observed = finish(true);
+    ASSERT_EQ(quiet.numReal, observed.numReal) << c.scene;
+    const bool burn = quiet.hasBurn();
+    const int stresses = quiet.stressComponents();
+    long differ = 0;
+    for (std::size_t i = 0; i < quiet.numReal; ++i) {
+      bool same = quiet.x[0][i] == observed.x[0][i] && quiet.v[0][i] == observed.v[0][i] &&
+                  quiet.u[i] == observed.u[i] && quiet.rho[i] == observed.rho[i] && quiet.P[i] == observed.P[i];
+      if (burn) same = same && quiet.burnFraction[i] == observed.burnFraction[i];
+      for (int k = 0; k < stresses; ++k) same = same && quiet.stress[k][i] == observed.stress[k][i];
+      if (!same) ++differ;
+    }
+    EXPECT_EQ(differ, 0) << c.scene;
+  }
+}
+
+// The burn fraction is the largest any evaluation gave (sim/sources/programmed_burn.cpp), so a
+// burning explosive skipped at a sub-step could keep a smaller one than a run that evaluated it
+// there (on several ranks, or with an observer): it is evaluated at every sub-step. (The TNT
+// bar above reads its burning particles anyway, so the run alone does not show this.)
+TEST(IndividualSteps, AnExplosiveStillBurningIsEvaluatedAtEverySubStep) {
+  const std::string source =
+      test::readTextFile(fs::path(EJECTA_SOURCE_DIR) / "scenes/verification/tnt_bar_1d.toml");
+  const Scene scene = parseScene(source, "tnt_bar_1d.toml", {});
+  const MaterialTable materials = MaterialTable::fromScene(scene);
+  ParticleSet p = buildParticles(scene, materials);
+  ASSERT_TRUE(p.hasBurn());
+  // Explosive particles unlit, half burnt and burnt out (an inert material's fraction is 1 too).
+  ASSERT_GT(p.numReal, 3u);
+  for (std::size_t i = 0; i < p.numReal; ++i) p.burnFraction[i] = std::array<double, 3>{0.0, 0.5, 1.0}[i % 3];
+  const ProgrammedBurnPackage burn(burnTable(scene.detonations, materials), scene.sph.eta);
+  ParticleMask evaluated(p.numReal, 0);
+  burn.markEvaluatedEverySubStep(p, evaluated);
+  for (std::size_t i = 0; i < p.numReal; ++i)
+    EXPECT_EQ(evaluated[i] != 0, p.burnFraction[i] < 1.0) << "particle " << i << ", fraction " << p.burnFraction[i];
 }
 
 std::string sceneError(const std::string& override) {
