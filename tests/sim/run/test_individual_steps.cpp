@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <unordered_map>
 
 #include "sim/io/snapshot.hpp"
@@ -14,7 +16,6 @@
 #include "sim/run/time_bins.hpp"
 #include "sim/sph/kernel.hpp"
 #include "sim/setup/bodies.hpp"
-#include "support/command_line.hpp"    // readTextFile
 #include "support/periodic_blast.hpp"  // runAndResumeFromSnapshot2
 
 namespace fs = std::filesystem;
@@ -60,6 +61,16 @@ center = [0.0, 0.0]
 profile = "gaussian"
 width = 0.05
 )";
+}
+
+// A shipped scene's text. (Not support/command_line.hpp's reader: a test file that includes it is
+// left out of the sanitised build, tests/fuzz/CMakeLists.txt.)
+std::string shippedScene(const std::string& path) {
+  std::ifstream in(fs::path(EJECTA_SOURCE_DIR) / path);
+  EXPECT_TRUE(in) << path;
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 struct Finished {
@@ -272,7 +283,7 @@ TEST(IndividualSteps, AnObserverLeavesTheRunAsItWas) {
   for (const Case& c : cases) {
     std::vector<std::string> overrides = c.overrides;
     overrides.push_back("time.stepping=individual");
-    const std::string source = test::readTextFile(fs::path(EJECTA_SOURCE_DIR) / c.scene);
+    const std::string source = shippedScene(c.scene);
     auto finish = [&](bool observed) {
       Scene scene = parseScene(source, c.scene, overrides);
       scene.output.snapshots = false;
@@ -308,8 +319,7 @@ TEST(IndividualSteps, AnObserverLeavesTheRunAsItWas) {
 // there (on several ranks, or with an observer): it is evaluated at every sub-step. (The TNT
 // bar above reads its burning particles anyway, so the run alone does not show this.)
 TEST(IndividualSteps, AnExplosiveStillBurningIsEvaluatedAtEverySubStep) {
-  const std::string source =
-      test::readTextFile(fs::path(EJECTA_SOURCE_DIR) / "scenes/verification/tnt_bar_1d.toml");
+  const std::string source = shippedScene("scenes/verification/tnt_bar_1d.toml");
   const Scene scene = parseScene(source, "tnt_bar_1d.toml", {});
   const MaterialTable materials = MaterialTable::fromScene(scene);
   ParticleSet p = buildParticles(scene, materials);
