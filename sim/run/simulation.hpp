@@ -134,11 +134,11 @@ class Simulation {
   ParticleSet gatherParticlesWhere(const ParticleFilter& keep) const;
   const ParticleSet& particlesNear(std::span<const std::array<double, 3>> points);
   // Individual steps on one rank evaluate the equation of state (and the packages' state
-  // updates) only where a sub-step reads it: its active particles, their partners and the
-  // particles a gauge reads. A reader of every particle between synchronisation points (an
-  // evolving thermal pass, a snapshot after an interrupt or a failure) calls this first to bring
-  // the others' pressure, sound speed and temperature to the present state. Cheap when nothing
-  // was skipped.
+  // updates) only where a sub-step reads it: its active particles, their partners, the
+  // particles a gauge reads and those a package marks (markEvaluatedEverySubStep). A reader of
+  // every particle between synchronisation points (an evolving thermal pass, a snapshot after an
+  // interrupt or a failure) calls this first to bring the others' pressure, sound speed and
+  // temperature to the present state. Cheap when nothing was skipped.
   void evaluateSkipped();
 
  private:
@@ -151,8 +151,9 @@ class Simulation {
   void evaluateEquationOfState(const ParticleMask* only = nullptr);
   // The pairs of the force pass: every real particle's, or (individual steps) the active ones'.
   void buildEvaluatedPairs(const std::vector<std::size_t>* active);
-  // readMask_: the active particles, their partners (an image's source for the image) and the
-  // particles whose support reaches a gauge.
+  // readMask_: the active particles, their partners (an image's source for the image), the
+  // particles whose support reaches a gauge and those a package marks (an explosive still
+  // burning).
   void markReadParticles(const std::vector<std::size_t>& active);
   void computeNextTimestep();
   // A particle in no pair (no real, ghost or halo particle within either's kernel) exchanges

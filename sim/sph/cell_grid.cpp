@@ -8,11 +8,6 @@
 
 namespace ejecta {
 
-long CellGrid::cellCoord(double x, int d) const {
-  const long c = static_cast<long>(std::floor((x - origin_[d]) / cellSize_));
-  return std::clamp(c, 0L, cells_[d] - 1);
-}
-
 namespace {
 
 std::string nonFinitePosition(const ParticleSet& p, int d) {

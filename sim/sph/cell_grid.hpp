@@ -60,6 +60,16 @@ class CellGrid {
   long cellCoord(double x, int d) const;
 };
 
+inline long CellGrid::cellCoord(double x, int d) const {
+  // floor((x - origin) / cell), clamped to the grid, without floor's library call: a quotient
+  // below 1 (or NaN) is cell 0, and past it truncation is floor. Inline: the grid bins every
+  // particle, and each query its bounds, at every sub-step of individual steps.
+  const double q = (x - origin_[d]) / cellSize_;
+  if (!(q >= 1.0)) return 0;
+  const long last = cells_[d] - 1;
+  return q >= static_cast<double>(last) ? last : static_cast<long>(q);
+}
+
 template <int D>
 void CellGrid::query(const ParticleSet&, const double* point, double radius,
                      std::vector<std::uint32_t>& out) const {

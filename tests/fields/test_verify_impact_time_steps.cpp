@@ -73,12 +73,16 @@ TEST(VerifyImpactTimeSteps, TheFollowersBurstInTheRealCraterCouplesAsWithGlobalS
               static_cast<long long>(individual.integer("particle_updates")), global.wallSeconds,
               individual.wallSeconds, global.energy.relativeError,
               individual.energy.relativeError);
-  // The coupled share of the yield, the study's answer: measured 0.688 against 0.678 (1.5%);
+  // The coupled share of the yield, the study's answer: measured 0.694 against 0.679 (+2.3%);
   // it moves by tens of percent with the spacing (docs/asteroid_studies.md), so 3% bounds the
-  // time stepping's part.
+  // time stepping's part. At the scene's settings only: with the Courant number or the closing
+  // speed changed, the two differ by -3.5% to +4.4% with no trend as the step falls, and the
+  // global runs alone span 9% (docs/time_steps.md, "Not yet": a few of the six-particle device's
+  // and impactor's particles carry percents of the yield), so a change that moves this run's
+  // bits can move the ratio by that much without being wrong.
   EXPECT_NEAR(individual.number("target_share_of_yield") / global.number("target_share_of_yield"),
               1.0, 0.03);
-  // The crater after the burst: measured 16.4 m against 17.5 m, two spacings (the device is six
+  // The crater after the burst: measured 16.7 m against 17.5 m, two spacings (the device is six
   // particles); three bound it.
   EXPECT_NEAR(individual.number("crater_depth_m"), global.number("crater_depth_m"), 3 * spacing);
   // Measured energy error 5.8e-3 (global 1.9e-4); 0.015 bounds it. Particle-steps: measured
