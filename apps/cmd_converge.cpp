@@ -37,10 +37,11 @@ std::string drawCharts(const fs::path& out, const coupling::ConvergenceResult& r
         lines.push_back({g.extrapolated, label, render::LineStyle::Solid});
       }
       if (g.basis != verify::UncertaintyBasis::None) {
-        const double fine = r.levels.back().values.at(q.name);
-        lines.push_back({fine + g.uncertainty, "finest value +- " + verify::describeBand(g, r.levels.size()),
+        // The band as the table gives it: clipped to what the quantity can be (--range).
+        const std::string clipped = q.bandClipped ? ", clipped to the quantity's range" : "";
+        lines.push_back({q.bandHigh, "finest value +- " + verify::describeBand(g, r.levels.size()) + clipped,
                          render::LineStyle::Dotted});
-        lines.push_back({fine - g.uncertainty, "", render::LineStyle::Dotted});
+        lines.push_back({q.bandLow, "", render::LineStyle::Dotted});
       }
       charts.writeChart({.csv = out / "levels.csv", .x = "spacing_m",
                          .series = {{.y = q.name, .label = "SPH", .markers = true}},
@@ -72,6 +73,11 @@ int convergeCommand(const ConvergeArgs& args) {
   o.overrides = args.overrides;
   o.threads = args.threads;
   o.formalOrder = args.formalOrder;
+  for (const std::string& text : args.ranges) {
+    const auto [quantity, range] = coupling::parseQuantityRange(text);
+    if (!o.ranges.emplace(quantity, range).second)
+      throw std::invalid_argument("converge: --range '" + quantity + "' is given twice");
+  }
   const std::string name = problem ? args.scene.substr(verifyPrefix.size()) : "";
   const SceneText scene = problem ? SceneText{} : readSceneArgument(args.scene);
   const std::string sceneName = problem ? name : parseScene(scene.text, scene.label, args.overrides).name;
@@ -107,6 +113,9 @@ int convergeCommand(const ConvergeArgs& args) {
       j["band_at_half_spread"] = g.bandAtHalfSpread;
       j["gci"] = g.gci;
       j["uncertainty"] = g.uncertainty;
+      j["band_low"] = q.bandLow;
+      j["band_high"] = q.bandHigh;
+      j["band_clipped"] = q.bandClipped;  // to the range --range gave
     }
     const verify::LeastSquaresUncertainty& ls = g.leastSquares;
     if (ls.available)
@@ -138,7 +147,12 @@ int convergeCommand(const ConvergeArgs& args) {
     char order[48] = "";
     if (g.valid) std::snprintf(order, sizeof order, "observed order %.3g: ", g.order);
     const std::string note = g.note.empty() ? "" : "; " + std::string(order) + g.note;
-    const std::string band = verify::describeBand(g, r.levels.size());
+    std::string band = verify::describeBand(g, r.levels.size());
+    if (q.bandClipped) {
+      char range[96];
+      std::snprintf(range, sizeof range, "; clipped to the quantity's range: %.6g to %.6g", q.bandLow, q.bandHigh);
+      band += range;
+    }
     if (g.asymptotic) {
       // Celik et al. (2008): the GCI band is the finest solution's uncertainty, so it is printed
       // about the finest value; the extrapolation is the estimate it brackets. (The GCI band's

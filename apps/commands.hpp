@@ -163,6 +163,7 @@ struct ConvergeArgs {
   std::string outDir;                  // default runs/<scene name>_converge
   int threads = 0;
   double formalOrder = 1.0;            // the fallback band's order (grid_convergence.hpp)
+  std::vector<std::string> ranges;     // --range QUANTITY=MIN:MAX: the band clipped to it
   bool charts = true;
 };
 int convergeCommand(const ConvergeArgs& args);

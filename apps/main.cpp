@@ -269,6 +269,9 @@ int main(int argc, char** argv) {
                    "The method's order for the quantities: 1 across shocks (default), 2 for smooth flow. An observed "
                    "order above twice it or below 0.5, none, or oscillating changes: the fallback band")
       ->check(CLI::Range(0.25, 8.0));
+  convergeCmd->add_option("--range", convergeArgs.ranges,
+                          "What a quantity can be, QUANTITY=MIN:MAX (repeatable; either side may be empty), e.g. "
+                          "target_share_of_yield=0:1: its band is reported and drawn clipped to it");
   convergeCmd->add_flag("!--no-charts", convergeArgs.charts, "Write the CSVs but draw no charts");
 
   ejecta::app::FragmentsArgs fragmentsArgs;

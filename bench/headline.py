@@ -91,8 +91,18 @@ def load_manifest(path):
 def converge_command(ejecta, study, out, threads):
     command = [ejecta, "converge", study["scene"], "--factors", ",".join(repr(float(f)) for f in study["factors"]),
                "--out", out]
+    ranged = set()
     for answer in study["answer"]:
         command += ["-q", answer["quantity"]]
+        # What the quantity can be, in its own unit (the manifest's is the row's, after scale), so
+        # that the charts clip the band as the table does.
+        if ("minimum" in answer or "maximum" in answer) and answer["quantity"] not in ranged:
+            ranged.add(answer["quantity"])
+            scale = answer.get("scale", 1.0)
+            low, high = answer.get("minimum", -math.inf) / scale, answer.get("maximum", math.inf) / scale
+            low, high = min(low, high), max(low, high)
+            command += ["--range", "%s=%s:%s" % (answer["quantity"], "" if math.isinf(low) else repr(low),
+                                                 "" if math.isinf(high) else repr(high))]
     if threads:
         command += ["--threads", str(threads)]
     for key in study.get("key", []):

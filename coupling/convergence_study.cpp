@@ -96,6 +96,24 @@ void analyse(ConvergenceResult& result, const ConvergenceOptions& o) {
       for (const ConvergenceLevel& l : result.levels) h.push_back(l.spacing), v.push_back(l.values.at(q));
       qc.convergence = verify::gridConvergence(h, v, o.formalOrder);
     }
+    const verify::GridConvergence& g = qc.convergence;
+    if (g.basis != verify::UncertaintyBasis::None) {
+      const double fine = result.levels.back().values.at(q);
+      qc.bandLow = fine - g.uncertainty;
+      qc.bandHigh = fine + g.uncertainty;
+      const auto range = o.ranges.find(q);
+      if (range != o.ranges.end() && !(fine >= range->second.minimum && fine <= range->second.maximum)) {
+        // The range cannot be what the quantity can be: say so, and leave the band whole.
+        std::string& note = qc.convergence.note;
+        note += std::string(note.empty() ? "" : "; ") + "the finest value " + number(fine) +
+                " lies outside --range " + number(range->second.minimum) + " to " + number(range->second.maximum) +
+                ": the band is not clipped";
+      } else if (range != o.ranges.end()) {
+        qc.bandClipped = qc.bandLow < range->second.minimum || qc.bandHigh > range->second.maximum;
+        qc.bandLow = std::max(qc.bandLow, range->second.minimum);
+        qc.bandHigh = std::min(qc.bandHigh, range->second.maximum);
+      }
+    }
     result.quantities.push_back(std::move(qc));
   }
 }
@@ -106,6 +124,12 @@ std::vector<double> checkedFactors(const ConvergenceOptions& o) {
   // Checked before any level runs, not when the levels are analysed.
   if (!(o.formalOrder > 0.0) || !std::isfinite(o.formalOrder))
     throw std::invalid_argument("converge: the formal order must be a positive number");
+  for (const auto& [name, range] : o.ranges) {
+    if (std::find(o.quantities.begin(), o.quantities.end(), name) == o.quantities.end())
+      throw std::invalid_argument("converge: --range '" + name + "': not one of the --quantity given");
+    if (!(range.minimum < range.maximum))
+      throw std::invalid_argument("converge: --range '" + name + "': the minimum must be below the maximum");
+  }
   std::vector<double> factors = o.factors;
   std::sort(factors.begin(), factors.end(), std::greater<>());
   for (std::size_t k = 0; k < factors.size(); ++k) {
@@ -117,6 +141,35 @@ std::vector<double> checkedFactors(const ConvergenceOptions& o) {
 }
 
 }  // namespace
+
+std::pair<std::string, QuantityRange> parseQuantityRange(const std::string& text) {
+  const auto fail = [&](const std::string& why) {
+    return std::invalid_argument("converge: --range '" + text + "': " + why + " (QUANTITY=MIN:MAX, e.g. " +
+                                 "target_share_of_yield=0:1; either side may be empty)");
+  };
+  const std::size_t equals = text.find('=');
+  if (equals == std::string::npos || equals == 0) throw fail("no quantity before '='");
+  const std::string bounds = text.substr(equals + 1);
+  const std::size_t colon = bounds.find(':');
+  if (colon == std::string::npos) throw fail("no ':' between the minimum and the maximum");
+  const auto bound = [&](const std::string& part, double none) {
+    if (part.empty()) return none;
+    std::size_t used = 0;
+    double value = 0.0;
+    try {
+      value = std::stod(part, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != part.size() || !std::isfinite(value)) throw fail("'" + part + "' is not a finite number");
+    return value;
+  };
+  QuantityRange range;
+  range.minimum = bound(bounds.substr(0, colon), -std::numeric_limits<double>::infinity());
+  range.maximum = bound(bounds.substr(colon + 1), std::numeric_limits<double>::infinity());
+  if (!(range.minimum < range.maximum)) throw fail("the minimum must be below the maximum");
+  return {text.substr(0, equals), range};
+}
 
 std::vector<std::string> levelOverrides(const std::string& sceneText, const std::string& label,
                                         const ConvergenceOptions& o, double factor) {

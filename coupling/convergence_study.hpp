@@ -11,14 +11,27 @@
 // summary.json is already there, completed, is read back, not run again, so a study resumes.
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sim/verify/grid_convergence.hpp"
 
 namespace ejecta::coupling {
+
+// What a quantity can physically be (a share 0 to 1, a depth or a volume not negative): a band
+// that runs past it is reported and drawn clipped to it. Either side may be infinite.
+struct QuantityRange {
+  double minimum = -std::numeric_limits<double>::infinity();
+  double maximum = std::numeric_limits<double>::infinity();
+};
+
+// `ejecta converge --range`'s "QUANTITY=MIN:MAX" (either side may be left empty: no bound).
+// Throws std::invalid_argument naming the text and what is wrong with it.
+std::pair<std::string, QuantityRange> parseQuantityRange(const std::string& text);
 
 struct ConvergenceOptions {
   std::vector<double> factors{};         // spacing multipliers, e.g. 1, 0.7, 0.5 (any order)
@@ -30,6 +43,8 @@ struct ConvergenceOptions {
   // The method's order for the quantities (1: SPH across shocks; 2: smooth flow): where the
   // levels are not in the asymptotic range the band falls back to it (grid_convergence.hpp).
   double formalOrder = 1.0;
+  // By quantity (each one of `quantities`): the range its band is clipped to.
+  std::map<std::string, QuantityRange> ranges{};
   // Told of each level as it ends (factor, particles, seconds; read back: seconds < 0).
   std::function<void(double, std::size_t, double)> onLevel{};
 };
@@ -45,6 +60,11 @@ struct ConvergenceLevel {
 struct QuantityConvergence {
   std::string name;
   verify::GridConvergence convergence;   // invalid with fewer than 3 levels (note says why)
+  // The finest value +- the band, clipped to the quantity's range where one is given
+  // (bandClipped: the band ran past it); NaN where there is no band.
+  double bandLow = std::numeric_limits<double>::quiet_NaN();
+  double bandHigh = std::numeric_limits<double>::quiet_NaN();
+  bool bandClipped = false;
 };
 
 struct ConvergenceResult {

@@ -238,7 +238,10 @@ std::vector<std::size_t> TimeBins::advanceTo(ParticleSet& p, const Leapfrog& lea
           for (std::size_t i = 0; i < n; ++i) y[i] = advanceCrack(y0[i], r[i], elapsed[i], caps ? caps[i] : 1.0);
           break;
       }
-      for (std::size_t i : finishing) {
+      // (At a block's end every particle finishes: a parallel loop too.)
+#pragma omp parallel for schedule(static)
+      for (std::size_t k = 0; k < finishing.size(); ++k) {
+        const std::size_t i = finishing[k];
         const double cap = caps ? caps[i] : 1.0;
         const double yHalf = limitedKick(f, y0[i], r[i], half[i], cap);
         y0[i] = yHalf;

@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -118,6 +120,73 @@ TEST(ConvergenceStudy, RunsCoarsestFirstAndReadsBackWhatIsDone) {
   o.factors = {1.0, 1.0};
   EXPECT_THROW(runConvergenceStudy(sodWithGauge(), "sod.toml", o), std::invalid_argument);
   fs::remove_all(o.outDir);
+}
+
+TEST(ConvergenceStudy, ARangeIsReadAsQuantityMinimumMaximum) {
+  const auto [name, range] = parseQuantityRange("target_share_of_yield=0:1");
+  EXPECT_EQ(name, "target_share_of_yield");
+  EXPECT_EQ(range.minimum, 0.0);
+  EXPECT_EQ(range.maximum, 1.0);
+  // Either side may be left open.
+  EXPECT_EQ(parseQuantityRange("crater_depth_m=0:").second.maximum, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(parseQuantityRange("x=:2.5e3").second.minimum, -std::numeric_limits<double>::infinity());
+  EXPECT_EQ(parseQuantityRange("x=:2.5e3").second.maximum, 2500.0);
+  // Each malformed text is refused with what is wrong and the form expected.
+  for (const char* bad : {"x", "=0:1", "x=0", "x=a:1", "x=0:1b", "x=1:0", "x=2:2", "x=0:inf", "x=nan:1"}) {
+    try {
+      parseQuantityRange(bad);
+      ADD_FAILURE() << bad << " was accepted";
+    } catch (const std::invalid_argument& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(std::string("'") + bad + "'"), std::string::npos) << what;
+      EXPECT_NE(what.find("QUANTITY=MIN:MAX"), std::string::npos) << what;
+    }
+  }
+}
+
+TEST(ConvergenceStudy, ABandIsClippedToTheQuantitysRange) {
+  // The 1D Sedov blast's shock radius at four levels (a second's runs), first with no range: the
+  // band is the finest value +- the uncertainty.
+  ConvergenceOptions o;
+  o.factors = {4.0, 2.0, std::sqrt(2.0), 1.0};
+  o.quantities = {"shock_radius"};
+  const ConvergenceResult open = runVerificationConvergence("sedov_1d", o);
+  const QuantityConvergence& q = open.quantities.at(0);
+  ASSERT_NE(q.convergence.basis, verify::UncertaintyBasis::None) << q.convergence.note;
+  const double fine = open.levels.back().values.at("shock_radius"), band = q.convergence.uncertainty;
+  ASSERT_GT(band, 0.0);
+  EXPECT_EQ(q.bandLow, fine - band);
+  EXPECT_EQ(q.bandHigh, fine + band);
+  EXPECT_FALSE(q.bandClipped);
+  // A range that cuts the band's lower half (as a share's 0% cuts a band wider than the share):
+  // that side stops at it, the other is kept, and the band says it was clipped. The
+  // uncertainty itself is the study's, unchanged.
+  o.ranges["shock_radius"] = {.minimum = fine - 0.5 * band};
+  const ConvergenceResult cut = runVerificationConvergence("sedov_1d", o);
+  const QuantityConvergence& c = cut.quantities.at(0);
+  EXPECT_EQ(c.convergence.uncertainty, band);
+  EXPECT_EQ(c.bandLow, fine - 0.5 * band);
+  EXPECT_EQ(c.bandHigh, fine + band);
+  EXPECT_TRUE(c.bandClipped);
+  // A range wider than the band changes nothing.
+  o.ranges["shock_radius"] = {.minimum = 0.0, .maximum = 1.0};
+  const QuantityConvergence wide = runVerificationConvergence("sedov_1d", o).quantities.at(0);
+  EXPECT_EQ(wide.bandLow, fine - band);
+  EXPECT_FALSE(wide.bandClipped);
+  // A range that leaves out the finest value itself is not what the quantity can be: the band
+  // stays whole and the note says why.
+  o.ranges["shock_radius"] = {.minimum = fine + 0.5 * band};
+  const QuantityConvergence wrong = runVerificationConvergence("sedov_1d", o).quantities.at(0);
+  EXPECT_EQ(wrong.bandLow, fine - band);
+  EXPECT_EQ(wrong.bandHigh, fine + band);
+  EXPECT_FALSE(wrong.bandClipped);
+  EXPECT_NE(wrong.convergence.note.find("lies outside --range"), std::string::npos) << wrong.convergence.note;
+  // A range for a quantity the study does not collect, or an empty one, is refused before any
+  // level runs.
+  o.ranges = {{"no_such", {}}};
+  EXPECT_THROW(runVerificationConvergence("sedov_1d", o), std::invalid_argument);
+  o.ranges = {{"shock_radius", {.minimum = 1.0, .maximum = 0.5}}};
+  EXPECT_THROW(runVerificationConvergence("sedov_1d", o), std::invalid_argument);
 }
 
 }  // namespace

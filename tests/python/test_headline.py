@@ -64,6 +64,43 @@ def test_the_shipped_manifest_names_shipped_scenes_and_three_levels():
     assert manifest["open"], "the answers that cannot be converged yet are stated"
 
 
+def test_the_command_gives_each_bounded_quantity_its_range_once(tmp_path):
+    """The manifest's bounds are in the row's unit (after scale); `ejecta converge --range` takes
+    the quantity's own, so its charts clip the band as the table does."""
+    manifest = write_manifest(tmp_path / "m.toml", """
+[[study]]
+id = "s"
+scene = "impact_rz"
+factors = [1.4142, 1, 0.7071]
+  [[study.answer]]
+  label = "share"
+  quantity = "target_share_of_yield"
+  unit = "%"
+  scale = 100
+  minimum = 0
+  maximum = 100
+  [[study.answer]]
+  label = "the same share again"
+  quantity = "target_share_of_yield"
+  unit = "%"
+  scale = 100
+  minimum = 0
+  maximum = 100
+  [[study.answer]]
+  label = "depth"
+  quantity = "crater_depth_m"
+  unit = "m"
+  minimum = 0
+  [[study.answer]]
+  label = "diameter"
+  quantity = "crater_apparent_diameter_m"
+  unit = "m"
+""")
+    command = headline.converge_command("ejecta", headline.load_manifest(manifest)["study"][0], "out", 0)
+    ranges = [command[k + 1] for k, word in enumerate(command) if word == "--range"]
+    assert ranges == ["target_share_of_yield=0.0:1.0", "crater_depth_m=0.0:"]
+
+
 def test_rows_from_a_study_that_ran(tmp_path):
     manifest = headline.load_manifest(write_manifest(tmp_path / "m.toml", STUDY))
     study = manifest["study"][0]
