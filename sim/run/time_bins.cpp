@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "sim/parallel/thread_team.hpp"
 #include "sim/solid/fracture.hpp"
 
 namespace ejecta {
@@ -132,7 +133,7 @@ bool TimeBins::beginSteps(ParticleSet& p, const Leapfrog& leapfrog,
   std::vector<double>& begin = p.column(*p.field(kBeginField), 0);
   std::vector<double>& end = p.column(*p.field(kEndField), 0);
   bool ok = true;
-#pragma omp parallel for schedule(static) reduction(&& : ok)
+#pragma omp parallel for schedule(static) reduction(&& : ok) if (which.size() >= kThreadTeamFrom)
   for (std::size_t k = 0; k < which.size(); ++k) {
     const std::size_t i = which[k];
     double dt = own[i];
@@ -187,74 +188,111 @@ std::vector<std::size_t> TimeBins::advanceTo(ParticleSet& p, const Leapfrog& lea
   elapsed.resize(n);
   half.resize(n);
   ends.resize(n);
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    const double t0 = timeAt(static_cast<Tick>(begin[i]));
-    elapsed[i] = tNext - t0;
-    half[i] = 0.5 * (timeAt(static_cast<Tick>(end[i])) - t0);
-    ends[i] = static_cast<Tick>(end[i]) == next;
-  }
-  std::vector<std::size_t> finishing;
-  for (std::size_t i = 0; i < n; ++i)
-    if (ends[i]) finishing.push_back(i);
+  // Every column this sub-step moves, looked up before the loops (a lookup compares names).
+  struct Column {
+    const Field* field;
+    double* y;
+    double* y0;  // finishing particles: becomes y_half
+    const double* rate;
+    const double* caps;  // Cap-limited fields: each particle's cap, else nullptr
+    double heldSign;     // held fields: -1 (density) or 1/D (h); 0 for the others
+    double* x;           // the velocity's columns: the positions they drift
+    const double* a0;
+  };
+  std::vector<Column> columns;
   const Field* velocity = p.field("velocity");
   for (const Advanced& a : advanced_) {
     const Field& f = *p.field(a.name);
     const Field& s = *p.field(a.start);
     if (a.held) {
-      // rho(t0) exp(-div v dt), h(t0) exp(div v dt / d): the continuity rate's prediction.
-      const double sign = a.name == "density" ? -1.0 : 1.0 / dimension;
-      double* y = p.column(f, 0).data();
-      const double* y0 = p.column(s, 0).data();
-      const double* divv = p.divv.data();
-#pragma omp parallel for schedule(static)
-      for (std::size_t i = 0; i < n; ++i)
-        y[i] = y0[i] * std::exp(std::clamp(sign * divv[i] * elapsed[i], -kMaxLogPrediction,
-                                           kMaxLogPrediction));
+      columns.push_back({&f, p.column(f, 0).data(), p.column(s, 0).data(), nullptr, nullptr,
+                         a.name == "density" ? -1.0 : 1.0 / dimension, nullptr, nullptr});
       continue;
     }
     const Field& rate = *p.field(f.spec.rate);
     const double* caps = a.cap.empty() ? nullptr : p.column(*p.field(a.cap), 0).data();
     for (int c = 0; c < evolvedComponents(f, dimension); ++c) {
-      double* y = p.column(f, c).data();
-      double* y0 = p.column(s, c).data();  // finishing particles: becomes y_half
-      const double* r = p.column(rate, c).data();
-      // Every particle predicted to the sub-step's time, one loop per kind of limit so the plain
-      // ones vectorise (this runs for every particle at every sub-step); then the particles whose
-      // step ends here take the first half kick instead, and the second from it.
-      switch (f.spec.limit) {
+      const bool drifts = &f == velocity;
+      columns.push_back({&f, p.column(f, c).data(), p.column(s, c).data(), p.column(rate, c).data(), caps,
+                         0.0, drifts ? p.x[static_cast<std::size_t>(c)].data() : nullptr,
+                         drifts ? p.a[static_cast<std::size_t>(c)].data() : nullptr});
+    }
+  }
+  std::vector<std::size_t> finishing;
+  finishing.reserve(n);  // filled inside the team, where an allocation's failure could not be thrown
+  const double* divv = p.divv.data();
+  // One thread team for the whole prediction (a team per column cost more than the loops on a
+  // blast's sub-steps). Each phase's loops write disjoint columns, so they run without waiting
+  // for each other; the phases wait once.
+#pragma omp parallel if (n >= kThreadTeamFrom)
+  {
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      const double t0 = timeAt(static_cast<Tick>(begin[i]));
+      elapsed[i] = tNext - t0;
+      half[i] = 0.5 * (timeAt(static_cast<Tick>(end[i])) - t0);
+      ends[i] = static_cast<Tick>(end[i]) == next;
+    }
+#pragma omp single
+    for (std::size_t i = 0; i < n; ++i)
+      if (ends[i]) finishing.push_back(i);
+    // Every particle predicted to the sub-step's time, one loop per kind of limit so the plain
+    // ones vectorise (this runs for every particle at every sub-step).
+    for (const Column& col : columns) {
+      double* y = col.y;
+      const double* y0 = col.y0;
+      const double* r = col.rate;
+      if (col.heldSign != 0.0) {
+        // rho(t0) exp(-div v dt), h(t0) exp(div v dt / d): the continuity rate's prediction.
+        const double sign = col.heldSign;
+#pragma omp for schedule(static) nowait
+        for (std::size_t i = 0; i < n; ++i)
+          y[i] = y0[i] * std::exp(std::clamp(sign * divv[i] * elapsed[i], -kMaxLogPrediction,
+                                             kMaxLogPrediction));
+        continue;
+      }
+      switch (col.field->spec.limit) {
         case KickLimit::None:
-#pragma omp parallel for schedule(static)
+#pragma omp for schedule(static) nowait
           for (std::size_t i = 0; i < n; ++i) y[i] = y0[i] + elapsed[i] * r[i];
           break;
         case KickLimit::Clamp: {
-          const double lo = f.spec.lo, hi = f.spec.hi;
-#pragma omp parallel for schedule(static)
+          const double lo = col.field->spec.lo, hi = col.field->spec.hi;
+#pragma omp for schedule(static) nowait
           for (std::size_t i = 0; i < n; ++i) y[i] = std::clamp(y0[i] + elapsed[i] * r[i], lo, hi);
           break;
         }
-        case KickLimit::Cap:
-#pragma omp parallel for schedule(static)
+        case KickLimit::Cap: {
+          const double* caps = col.caps;
+#pragma omp for schedule(static) nowait
           for (std::size_t i = 0; i < n; ++i) y[i] = advanceCrack(y0[i], r[i], elapsed[i], caps ? caps[i] : 1.0);
           break;
+        }
       }
-      // (At a block's end every particle finishes: a parallel loop too.)
-#pragma omp parallel for schedule(static)
+    }
+#pragma omp barrier
+    // The particles whose step ends here take the first half kick instead, and the second from
+    // it (at a block's end every particle finishes, so these are shared too).
+    for (const Column& col : columns) {
+      if (col.heldSign != 0.0) continue;
+#pragma omp for schedule(static) nowait
       for (std::size_t k = 0; k < finishing.size(); ++k) {
         const std::size_t i = finishing[k];
-        const double cap = caps ? caps[i] : 1.0;
-        const double yHalf = limitedKick(f, y0[i], r[i], half[i], cap);
-        y0[i] = yHalf;
-        y[i] = limitedKick(f, yHalf, r[i], half[i], cap);
+        const double cap = col.caps ? col.caps[i] : 1.0;
+        const double yHalf = limitedKick(*col.field, col.y0[i], col.rate[i], half[i], cap);
+        col.y0[i] = yHalf;
+        col.y[i] = limitedKick(*col.field, yHalf, col.rate[i], half[i], cap);
       }
-      if (&f == velocity) {
-        // Positions drift by the half-step velocity of each particle's own step.
-        double* x = p.x[static_cast<std::size_t>(c)].data();
-        const double* a0 = p.a[static_cast<std::size_t>(c)].data();
-#pragma omp parallel for schedule(static)
-        for (std::size_t i = 0; i < n; ++i)
-          x[i] += delta * (ends[i] ? y0[i] : y0[i] + half[i] * a0[i]);
-      }
+    }
+#pragma omp barrier
+    // Positions drift by the half-step velocity of each particle's own step.
+    for (const Column& col : columns) {
+      if (!col.x) continue;
+      double* x = col.x;
+      const double* v0 = col.y0;
+      const double* a0 = col.a0;
+#pragma omp for schedule(static) nowait
+      for (std::size_t i = 0; i < n; ++i) x[i] += delta * (ends[i] ? v0[i] : v0[i] + half[i] * a0[i]);
     }
   }
   if (!velocity || !p.field("velocity:start"))
@@ -265,23 +303,37 @@ std::vector<std::size_t> TimeBins::advanceTo(ParticleSet& p, const Leapfrog& lea
 
 void TimeBins::finishSteps(ParticleSet& p, const Leapfrog& leapfrog,
                            std::span<const std::size_t> which, int dimension) {
+  const std::vector<double>& begin = p.column(*p.field(kBeginField), 0);
+  const std::vector<double>& end = p.column(*p.field(kEndField), 0);
   std::vector<double> half(which.size());
-  for (std::size_t k = 0; k < which.size(); ++k) half[k] = 0.5 * stepLength(p, which[k]);
+  for (std::size_t k = 0; k < which.size(); ++k)
+    half[k] = 0.5 * (timeAt(static_cast<Tick>(end[which[k]])) - timeAt(static_cast<Tick>(begin[which[k]])));
+  // Field by field: a cap comes from the state at the step's end, including the fields kicked
+  // before it. The components of a field share one thread team when enough particles finish.
+  const std::size_t count = which.size();
   for (const Advanced& a : advanced_) {
     if (a.held) continue;
     const Field& f = *p.field(a.name);
     const Field& s = *p.field(a.start);
     const Field& rate = *p.field(f.spec.rate);
     std::vector<double> caps;
-    if (!a.cap.empty()) caps = (*leapfrog.caps(a.name))(p);  // from the state at the step's end
-    for (int c = 0; c < evolvedComponents(f, dimension); ++c) {
-      double* y = p.column(f, c).data();
-      const double* yHalf = p.column(s, c).data();
-      const double* r = p.column(rate, c).data();
-#pragma omp parallel for schedule(static)
-      for (std::size_t k = 0; k < which.size(); ++k) {
+    if (!a.cap.empty()) caps = (*leapfrog.caps(a.name))(p);  // runs its own parallel loop
+    const double* cap = caps.empty() ? nullptr : caps.data();
+    // The columns looked up outside the team (a lookup may throw, which a team cannot pass on).
+    const int components = evolvedComponents(f, dimension);
+    std::vector<double*> y;
+    std::vector<const double*> yHalf, r;
+    for (int c = 0; c < components; ++c) {
+      y.push_back(p.column(f, c).data());
+      yHalf.push_back(p.column(s, c).data());
+      r.push_back(p.column(rate, c).data());
+    }
+#pragma omp parallel if (count >= kThreadTeamFrom)
+    for (int c = 0; c < components; ++c) {
+#pragma omp for schedule(static) nowait
+      for (std::size_t k = 0; k < count; ++k) {
         const std::size_t i = which[k];
-        y[i] = limitedKick(f, yHalf[i], r[i], half[k], caps.empty() ? 1.0 : caps[i]);
+        y[c][i] = limitedKick(f, yHalf[c][i], r[c][i], half[k], cap ? cap[i] : 1.0);
       }
     }
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/parallel/thread_team.hpp"
 #include "sim/state/tensor.hpp"
 
 namespace ejecta {
@@ -28,8 +29,7 @@ std::vector<const Field*> haloFields(const ParticleSet& p) {
 template <class From, class To, class Flips>
 void copyHaloFields(ParticleSet& p, const std::vector<const Field*>& halo, std::size_t count,
                     From from, To to, Flips flips) {
-  constexpr std::size_t kThreadedFrom = 2048;  // below this a thread team costs more than it saves
-#pragma omp parallel if (count >= kThreadedFrom)
+#pragma omp parallel if (count >= kThreadTeamFrom)
   for (const Field* f : halo) {
     switch (f->storage.kind) {
       case FieldStorage::Kind::Int32: {
@@ -128,6 +128,7 @@ void Boundaries::makeGhosts(ParticleSet& p, double supportFactor, const Communic
     // ghosts made for earlier faces, which is what fills the corners.
     const std::size_t n = p.size();
     double layer = 0.0;
+#pragma omp parallel for schedule(static) if (n >= kThreadTeamFrom) reduction(max : layer)
     for (std::size_t i = 0; i < n; ++i)
       if (reachesLanding(face, p.x[d][i], supportFactor * p.h[i]))
         layer = std::max(layer, supportFactor * p.h[i]);

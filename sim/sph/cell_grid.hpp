@@ -56,6 +56,8 @@ class CellGrid {
   std::vector<double> sortedPos_[3];      // positions in cell order, for cache-friendly queries
   std::vector<double> reach_;             // per cell: recordReach's widest support reaching it
   std::vector<double> ownReach_;          // per cell: the widest support of its own particles
+  std::vector<std::uint32_t> cellOf_;     // build's scratch: each particle's cell
+  std::vector<std::uint32_t> fill_;       // build's scratch: each cell's next free slot
 
   long cellCoord(double x, int d) const;
 };

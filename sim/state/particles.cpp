@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "sim/parallel/thread_team.hpp"
 #include "sim/state/builtin_fields.hpp"
 
 namespace ejecta {
@@ -14,7 +15,10 @@ namespace {
 template <typename T>
 void permuteArray(std::vector<T>& data, const std::vector<std::size_t>& order) {
   std::vector<T> out(order.size());
-  for (std::size_t i = 0; i < order.size(); ++i) out[i] = data[order[i]];
+  // Every column is permuted every 16 sub-steps of individual time steps.
+  const std::size_t n = order.size();
+#pragma omp parallel for schedule(static) if (n >= kThreadTeamFrom)
+  for (std::size_t i = 0; i < n; ++i) out[i] = data[order[i]];
   data.swap(out);
 }
 

@@ -1,9 +1,9 @@
 // The golden comparison: short runs of shipped scenes in 1D, 2D planar, RZ and 3D, hydro and
-// solid, burn, a delayed deposit and the viscosity switch and reconstruction, whose every
-// snapshot dataset, snapshot attribute and summary.json value must equal, to the last bit, what
-// was recorded in tests/golden/. It pins behaviour across refactors that must not change it (the
-// sim/ reorganisation, the field registry). A change that is meant to move the numbers
-// re-records the files and says so in its commit:
+// solid, burn, a delayed deposit, individual time steps and the viscosity switch and
+// reconstruction, whose every snapshot dataset, snapshot attribute and summary.json value must
+// equal, to the last bit, what was recorded in tests/golden/. It pins behaviour across refactors
+// that must not change it (the sim/ reorganisation, the field registry). A change that is meant
+// to move the numbers re-records the files and says so in its commit:
 //   EJECTA_GOLDEN_RECORD=1 ./build/tests/test_golden_snapshots
 // The runs use 2 threads (results are deterministic for a fixed thread count, not across
 // counts). The values are pinned for this project's machine kind: a different CPU's libm may
@@ -282,6 +282,16 @@ TEST(Golden, FollowerDelayedDepositRZ) {
   checkOrRecord({"case2_follower", "scenes/case2_rz_follower.toml",
                  {"bodies[2].spacing=2 m", "bodies[3].spacing=2 m", "time.t_end=3.02 ms",
                   "output.snapshot_interval=1.5 ms"}, ""});
+}
+
+// The same on time bins (a pin on the bins' path, which no other record runs): the sub-steps'
+// predictions, kicks and restricted passes with porosity, fracture and the delayed deposit, at a
+// spacing that gives 3,426 particles, so that the loops guarded by kThreadTeamFrom (2,048) run on
+// the test's two threads.
+TEST(Golden, FollowerDelayedDepositRZIndividualSteps) {
+  checkOrRecord({"case2_follower_bins", "scenes/case2_rz_follower.toml",
+                 {"bodies[2].spacing=0.75 m", "bodies[3].spacing=0.75 m", "time.t_end=3.02 ms",
+                  "output.snapshot_interval=1.5 ms", "time.stepping=individual"}, ""});
 }
 
 TEST(Golden, BlastSwitchReconstruction2D) {
