@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -11,6 +12,7 @@
 #include <optional>
 #include <sstream>
 
+#include "sim/parallel/thread_team.hpp"
 #include "sim/run/packages/phase_fractions_package.hpp"
 #include "sim/run/packages/porosity_package.hpp"
 #include "sim/run/packages/programmed_burn_package.hpp"
@@ -502,11 +504,19 @@ void Simulation::buildEvaluatedPairs(const std::vector<std::size_t>* active) {
 
 void Simulation::markReadParticles(const std::vector<std::size_t>& active) {
   readMask_.assign(p_.numReal, 0);
-  // Each active particle and its partners; an image stands for its source. One thread: a
-  // particle is the partner of several.
-  for (std::size_t i : active) {
-    readMask_[i] = 1;
-    for (std::uint32_t j : ws_.lists.pairs(i)) readMask_[j < p_.numReal ? j : p_.ghostSource[j - p_.numReal]] = 1;
+  // Each active particle and its partners; an image stands for its source. A particle is the
+  // partner of several, so the marks are atomic stores (of the same 1: the mask does not depend
+  // on the order).
+  unsigned char* read = readMask_.data();
+  const std::size_t nReal = p_.numReal;
+  const std::size_t count = active.size();
+#pragma omp parallel for schedule(static) if (count >= kThreadTeamFrom / 8)
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t i = active[k];
+    std::atomic_ref<unsigned char>(read[i]).store(1, std::memory_order_relaxed);
+    for (std::uint32_t j : ws_.lists.pairs(i))
+      std::atomic_ref<unsigned char>(read[j < nReal ? j : p_.ghostSource[j - nReal]])
+          .store(1, std::memory_order_relaxed);
   }
   // The gauges read every particle whose support reaches them (sim/sources/gauges.cpp), after
   // each sub-step.

@@ -1,5 +1,7 @@
 #include "sim/sph/boundaries.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -134,12 +136,27 @@ void Boundaries::makeGhosts(ParticleSet& p, double supportFactor, const Communic
         layer = std::max(layer, supportFactor * p.h[i]);
     if (ranks) layer = ranks->maximum(layer);
     layer_[f] = layer;
-    // Images of every particle inside the layer, appended in index order.
-    std::vector<std::size_t> images;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double dist = distance(i);
-      if (dist >= 0.0 && dist < layer) images.push_back(i);
+    // Images of every particle inside the layer, appended in index order: each thread lists
+    // those of its static (contiguous, ascending) share, and the lists are joined in thread order.
+    std::vector<std::vector<std::size_t>>& found = imagesFound_;
+    found.resize(static_cast<std::size_t>(omp_get_max_threads()));
+    // Room for a static share each (the first for all, should the team be one thread), so that
+    // no list allocates inside the team, whose exceptions could not be thrown on.
+    for (std::size_t t = 0; t < found.size(); ++t) {
+      found[t].clear();
+      found[t].reserve(t == 0 ? n : n / found.size() + 1);
     }
+#pragma omp parallel if (n >= kThreadTeamFrom)
+    {
+      std::vector<std::size_t>& mine = found[static_cast<std::size_t>(omp_get_thread_num())];
+#pragma omp for schedule(static)
+      for (std::size_t i = 0; i < n; ++i) {
+        const double dist = distance(i);
+        if (dist >= 0.0 && dist < layer) mine.push_back(i);
+      }
+    }
+    std::vector<std::size_t> images;
+    for (const auto& list : found) images.insert(images.end(), list.begin(), list.end());
     const std::size_t first = p.size();
     p.resize(first + images.size());
     p.ghostSource.resize(p.numGhosts());
@@ -188,12 +205,18 @@ void Boundaries::refreshGhostTensor(const ParticleSet& p, std::vector<double>& t
 }
 
 bool Boundaries::layersCover(const ParticleSet& p, double supportFactor) const {
+  const std::size_t n = p.numReal;
   for (std::size_t f = 0; f < faces_.size(); ++f) {
     const Face& face = faces_[f];
-    for (std::size_t i = 0; i < p.numReal; ++i) {
+    const double layer = layer_[f];
+    const double* x = p.x[face.axis].data();
+    bool covered = true;
+#pragma omp parallel for schedule(static) if (n >= kThreadTeamFrom) reduction(&& : covered)
+    for (std::size_t i = 0; i < n; ++i) {
       const double reach = supportFactor * p.h[i];
-      if (reach > layer_[f] && reachesLanding(face, p.x[face.axis][i], reach)) return false;
+      if (reach > layer && reachesLanding(face, x[i], reach)) covered = false;
     }
+    if (!covered) return false;
   }
   return true;
 }

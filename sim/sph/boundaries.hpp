@@ -82,6 +82,7 @@ class Boundaries {
   std::vector<Face> faces_;
   mutable std::vector<double> layer_;      // layer width per face from the last makeGhosts
   mutable std::vector<std::uint8_t> flips_; // per ghost: bit d set = velocity component d reversed
+  mutable std::vector<std::vector<std::size_t>> imagesFound_;  // makeGhosts' scratch, per thread
 };
 
 }  // namespace ejecta
