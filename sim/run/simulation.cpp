@@ -506,7 +506,8 @@ void Simulation::markReadParticles(const std::vector<std::size_t>& active) {
   readMask_.assign(p_.numReal, 0);
   // Each active particle and its partners; an image stands for its source. A particle is the
   // partner of several, so the marks are atomic stores (of the same 1: the mask does not depend
-  // on the order).
+  // on the order). Threaded from a few hundred active particles (kThreadTeamFrom / 8): each
+  // visits its tens of partners, so a particle here is worth several of a simple loop's.
   unsigned char* read = readMask_.data();
   const std::size_t nReal = p_.numReal;
   const std::size_t count = active.size();

@@ -119,12 +119,6 @@ void TimeBins::beginBlock(double start, double length) {
   now_ = 0;
 }
 
-double TimeBins::stepLength(const ParticleSet& p, std::size_t i) const {
-  const Tick begin = static_cast<Tick>(p.column(*p.field(kBeginField), 0)[i]);
-  const Tick end = static_cast<Tick>(p.column(*p.field(kEndField), 0)[i]);
-  return timeAt(end) - timeAt(begin);
-}
-
 bool TimeBins::beginSteps(ParticleSet& p, const Leapfrog& leapfrog,
                           std::span<const std::size_t> which, std::span<const int> floorBin) {
   if (which.empty()) return true;

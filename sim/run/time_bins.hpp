@@ -105,7 +105,6 @@ class TimeBins {
   std::vector<double>& bins(ParticleSet& p) const { return p.column(*p.field(kBinField), 0); }
   const std::vector<double>& bins(const ParticleSet& p) const { return p.column(*p.field(kBinField), 0); }
   std::vector<double>& ownSteps(ParticleSet& p) const { return p.column(*p.field(kOwnStepField), 0); }
-  double stepLength(const ParticleSet& p, std::size_t i) const;
 
   // Particle-steps completed so far (the cost counter of docs/time_steps.md).
   std::uint64_t updates() const { return updates_; }
