@@ -1,5 +1,5 @@
 // ejecta_bench_memory: the memory a run takes per particle, measured, against the constant the
-// memory check uses (sim/setup/memory_estimate.hpp, kBytesPerParticle). Runs `ejecta run` on one
+// memory check uses (sim/setup/memory_estimate.hpp, bytesPerParticle). Runs `ejecta run` on one
 // scene at two spacings as child processes, reads each one's peak resident memory (wait4's
 // rusage) and particle count (summary.json), and prints the slope: bytes per extra particle.
 // The intercept (libraries, OpenMP pools, the code) is left out of the slope.
@@ -25,6 +25,8 @@
 
 #include "arguments.hpp"
 #include "sim/setup/memory_estimate.hpp"
+#include "sim/setup/scene.hpp"
+#include "sim/setup/scene_catalog.hpp"
 
 extern char** environ;
 
@@ -128,17 +130,20 @@ int main(int argc, char** argv) {
     return 2;
   }
   const double slope = (fine.peakBytes - coarse.peakBytes) / static_cast<double>(fine.particles - coarse.particles);
+  // What the memory check assumes for this scene with these settings.
+  const ejecta::SceneText text = ejecta::readSceneArgument(scene);
+  const double assumed = ejecta::bytesPerParticle(ejecta::parseScene(text.text, text.label, sets));
   if (json) {
     std::printf("{\"scene\": \"%s\", \"particles\": [%ld, %ld], \"peak_bytes\": [%.0f, %.0f], "
                 "\"bytes_per_particle\": %.1f, \"estimate_bytes_per_particle\": %.1f}\n",
                 scene.c_str(), coarse.particles, fine.particles, coarse.peakBytes, fine.peakBytes, slope,
-                ejecta::kBytesPerParticle);
+                assumed);
     return 0;
   }
   std::printf("%s: peak resident memory of `ejecta run`\n", scene.c_str());
   for (const Measure& m : {coarse, fine})
     std::printf("  spacing %-10.4g %9ld particles  %8.1f MB\n", m.spacing, m.particles, m.peakBytes / 1e6);
   std::printf("  slope: %.0f bytes per particle (%.2f kB); the memory check assumes %.0f (%.2f of it)\n", slope,
-              slope / 1024.0, ejecta::kBytesPerParticle, slope / ejecta::kBytesPerParticle);
+              slope / 1024.0, assumed, slope / assumed);
   return 0;
 }

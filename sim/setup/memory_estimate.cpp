@@ -60,15 +60,20 @@ RunMemoryEstimate estimateRunMemory(const Scene& scene) {
     if (body.spacing > 0.0)
       e.particles += measure * fillFraction(body.shape, dim) * pointsPerMeasure(body.lattice, dim, body.spacing);
   }
-  e.bytes = e.particles * kBytesPerParticle;
+  e.bytes = e.particles * bytesPerParticle(scene);
   return e;
+}
+
+double bytesPerParticle(const Scene& scene) {
+  const bool riemann = scene.sph.dissipation == Dissipation::Riemann;
+  return kBytesPerParticle + (riemann ? kRiemannBytesPerParticle[spatialDimension(scene.geometry)] : 0.0);
 }
 
 void requireRunMemory(const Scene& scene, int ranks) {
   const RunMemoryEstimate e = estimateRunMemory(scene);
   char detail[160];
   std::snprintf(detail, sizeof detail, "about %.3g particles x %.0f bytes%s", e.particles,
-                kBytesPerParticle, ranks > 1 ? ", per rank" : "");
+                bytesPerParticle(scene), ranks > 1 ? ", per rank" : "");
   requireMemory(scene.sourcePath + ": key 'bodies': the run of scene '" + scene.name + "'",
                 e.bytes / std::fmax(ranks, 1), detail,
                 "coarsen the bodies' spacing (memory goes as spacing^-d) or run on more ranks");

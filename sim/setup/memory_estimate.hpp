@@ -15,6 +15,15 @@ struct RunMemoryEstimate {
 // (hydro), 1.28 kB for the 3D oblique impact over 20 us (strength, damage, three materials;
 // 1.62 kB by hand over longer runs). 2 kB covers both with the ghosts of walls and mirrors.
 inline constexpr double kBytesPerParticle = 2048.0;
+// Godunov SPH (sph.dissipation = "riemann") adds the star states of the pairs that both sides sum
+// (sim/sph/shared_pair_stars.hpp, 36 bytes a pair and half the neighbours a particle), measured
+// the same way against the viscosity's run: +1,160 bytes per particle for the 3D Sedov (2,485
+// against 1,325) and +412 for the 2D one (1,163 against 751; `ejecta_bench_memory --scene
+// verification/sedov_2d --spacings 0.01,0.005 --set sph.dissipation=riemann`). By dimension:
+inline constexpr double kRiemannBytesPerParticle[4] = {0.0, 100.0, 450.0, 1200.0};
+
+// A run's bytes per particle: kBytesPerParticle and what its options add.
+double bytesPerParticle(const Scene& scene);
 
 RunMemoryEstimate estimateRunMemory(const Scene& scene);
 

@@ -119,11 +119,14 @@ void CellGrid::recordReach(const ParticleSet& p, double support) {
   const std::size_t numCells = cellStart_.size() - 1;
   std::vector<double>& own = ownReach_;  // the widest support of the particles in each cell
   own.resize(numCells);
+  sortedSupport_.resize(sorted_.size());
 #pragma omp parallel for schedule(static) if (numCells >= kThreadTeamFrom)
   for (std::size_t c = 0; c < numCells; ++c) {
     double widest = 0.0;
-    for (std::uint32_t k = cellStart_[c]; k < cellStart_[c + 1]; ++k)
-      widest = std::max(widest, support * p.h[sorted_[k]]);
+    for (std::uint32_t k = cellStart_[c]; k < cellStart_[c + 1]; ++k) {
+      sortedSupport_[k] = support * p.h[sorted_[k]];
+      widest = std::max(widest, sortedSupport_[k]);
+    }
     own[c] = widest;
   }
   // Spread each cell's support over the cells it may reach (a cube of them: conservative). Each

@@ -56,10 +56,13 @@ class CellGrid {
   std::vector<double> sortedPos_[3];      // positions in cell order, for cache-friendly queries
   std::vector<double> reach_;             // per cell: recordReach's widest support reaching it
   std::vector<double> ownReach_;          // per cell: the widest support of its own particles
+  std::vector<double> sortedSupport_;     // recordReach's support of each particle, in cell order
   std::vector<std::uint32_t> cellOf_;     // build's scratch: each particle's cell
   std::vector<std::uint32_t> fill_;       // build's scratch: each cell's next free slot
 
   long cellCoord(double x, int d) const;
+  // queryReaching's per-axis part of a cell's nearest and farthest squared distance from x.
+  void axisBounds(int d, long at, double x, double& gap2, double& far2, bool& open) const;
 };
 
 inline long CellGrid::cellCoord(double x, int d) const {
@@ -81,20 +84,31 @@ void CellGrid::query(const ParticleSet&, const double* point, double radius,
     hi[d] = cellCoord(point[d] + radius, d);
   }
   const double r2 = radius * radius;
+  // The columns in locals: `out` could alias the members for all the compiler knows, which
+  // would reload them at every particle.
+  const double* pos[3] = {sortedPos_[0].data(), sortedPos_[D > 1 ? 1 : 0].data(),
+                          sortedPos_[D > 2 ? 2 : 0].data()};
+  const std::uint32_t* index = sorted_.data();
   for (long cz = lo[2]; cz <= hi[2]; ++cz) {
     for (long cy = lo[1]; cy <= hi[1]; ++cy) {
       const long rowBase = (cz * cells_[1] + cy) * cells_[0];
       const std::uint32_t begin = cellStart_[rowBase + lo[0]];
       const std::uint32_t end = cellStart_[rowBase + hi[0] + 1];
-      // A row of cells is contiguous in the sorted order: one sweep.
+      // A row of cells is contiguous in the sorted order: one sweep, without branches (whether a
+      // particle is within is as good as random to the branch predictor).
+      std::size_t n = out.size();
+      out.resize(n + (end - begin));
+      std::uint32_t* to = out.data();
       for (std::uint32_t k = begin; k < end; ++k) {
         double d2 = 0.0;
         for (int d = 0; d < D; ++d) {
-          const double dx = sortedPos_[d][k] - point[d];
+          const double dx = pos[d][k] - point[d];
           d2 += dx * dx;
         }
-        if (d2 < r2) out.push_back(sorted_[k]);
+        to[n] = index[k];
+        n += d2 < r2;
       }
+      out.resize(n);
     }
   }
 }
@@ -108,44 +122,70 @@ void CellGrid::queryReaching(const double* point, double radius, std::vector<std
     hi[d] = cellCoord(point[d] + radius, d);
   }
   const double r2 = radius * radius;
-  for (long cz = lo[2]; cz <= hi[2]; ++cz)
-    for (long cy = lo[1]; cy <= hi[1]; ++cy)
+  // Each axis's part of the distance from the point to a cell depends on that axis's coordinate
+  // alone: the outer axes' parts are taken once per slab and row, and summed per cell in the
+  // order of the axes (the same sums, to the bit, as taking all three per cell).
+  double gap2[3] = {0.0, 0.0, 0.0}, far2[3] = {0.0, 0.0, 0.0};
+  bool open[3] = {false, false, false};
+  const double* pos[3] = {sortedPos_[0].data(), sortedPos_[D > 1 ? 1 : 0].data(),
+                          sortedPos_[D > 2 ? 2 : 0].data()};  // in locals, as query's
+  const std::uint32_t* index = sorted_.data();
+  const double* support = sortedSupport_.data();
+  for (long cz = lo[2]; cz <= hi[2]; ++cz) {
+    if (D > 2) axisBounds(2, cz, point[2], gap2[2], far2[2], open[2]);
+    for (long cy = lo[1]; cy <= hi[1]; ++cy) {
+      if (D > 1) axisBounds(1, cy, point[1], gap2[1], far2[1], open[1]);
       for (long cx = lo[0]; cx <= hi[0]; ++cx) {
-        const long at[3] = {cx, cy, cz};
         const std::size_t c = static_cast<std::size_t>((cz * cells_[1] + cy) * cells_[0] + cx);
         const double own = ownReach_[c];
         if (own == 0.0 || own <= beyond) continue;
-        // Nearest and farthest distance from the point to the cell; the edge cells also hold
-        // what lies beyond the grid (cellCoord clamps), so they are open on that side.
-        // The bounds are widened by the rounding of the binning (a particle may lie a few ulps
-        // of its coordinates outside the cell it was binned in), so that a skipped cell holds no
-        // particle the caller's exact test would keep.
-        double gap2 = 0.0, far2 = 0.0;
-        bool open = false;
+        axisBounds(0, cx, point[0], gap2[0], far2[0], open[0]);
+        double gap = 0.0, far = 0.0;
         for (int d = 0; d < D; ++d) {
-          const double low = origin_[d] + static_cast<double>(at[d]) * cellSize_;
-          const double high = low + cellSize_;
-          const double pad = 1e-14 * (std::abs(low) + std::abs(high) + std::abs(point[d]));
-          double gap = 0.0;
-          if (point[d] < low && at[d] > 0) gap = std::max(low - point[d] - pad, 0.0);
-          else if (point[d] > high && at[d] < cells_[d] - 1) gap = std::max(point[d] - high - pad, 0.0);
-          gap2 += gap * gap;
-          const double far = std::max(std::abs(point[d] - low), std::abs(high - point[d])) + pad;
-          far2 += far * far;
-          open = open || at[d] == 0 || at[d] == cells_[d] - 1;
+          gap += gap2[d];
+          far += far2[d];
         }
-        if (gap2 >= own * own) continue;
-        if (!open && far2 < beyond * beyond) continue;  // every particle in it nearer than `beyond`
+        if (gap >= own * own) continue;
+        const bool anyOpen = open[0] || (D > 1 && open[1]) || (D > 2 && open[2]);
+        if (!anyOpen && far < beyond * beyond) continue;  // every particle in it nearer than `beyond`
         const double limit2 = std::min(r2, own * own), inner2 = beyond * beyond;
-        for (std::uint32_t k = cellStart_[c]; k < cellStart_[c + 1]; ++k) {
+        const std::uint32_t begin = cellStart_[c], end = cellStart_[c + 1];
+        std::size_t n = out.size();
+        out.resize(n + (end - begin));
+        std::uint32_t* to = out.data();
+        for (std::uint32_t k = begin; k < end; ++k) {  // without branches, as query's sweep
           double d2 = 0.0;
           for (int d = 0; d < D; ++d) {
-            const double dx = sortedPos_[d][k] - point[d];
+            const double dx = pos[d][k] - point[d];
             d2 += dx * dx;
           }
-          if (d2 < limit2 && d2 >= inner2) out.push_back(sorted_[k]);
+          // A support that stops at `beyond` cannot reach past it.
+          to[n] = index[k];
+          n += (d2 < limit2) & (d2 >= inner2) & (support[k] > beyond);
         }
+        out.resize(n);
       }
+    }
+  }
+}
+
+inline void CellGrid::axisBounds(int d, long at, double x, double& gap2, double& far2,
+                                 bool& open) const {
+  // Nearest and farthest distance from x to the cell's span along axis d; the edge cells also
+  // hold what lies beyond the grid (cellCoord clamps), so they are open on that side. The bounds
+  // are widened by the rounding of the binning (a particle may lie a few ulps of its coordinates
+  // outside the cell it was binned in), so that a skipped cell holds no particle the caller's
+  // exact test would keep.
+  const double low = origin_[d] + static_cast<double>(at) * cellSize_;
+  const double high = low + cellSize_;
+  const double pad = 1e-14 * (std::abs(low) + std::abs(high) + std::abs(x));
+  double gap = 0.0;
+  if (x < low && at > 0) gap = std::max(low - x - pad, 0.0);
+  else if (x > high && at < cells_[d] - 1) gap = std::max(x - high - pad, 0.0);
+  gap2 = gap * gap;
+  const double far = std::max(std::abs(x - low), std::abs(high - x)) + pad;
+  far2 = far * far;
+  open = at == 0 || at == cells_[d] - 1;
 }
 
 }  // namespace ejecta

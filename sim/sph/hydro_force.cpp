@@ -39,6 +39,8 @@
 
 #include "sim/solid/porosity.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -127,6 +129,31 @@ StarState pairStar(const PairOrigin& o, const Pair& g, const ParticleSet& p, con
   const StarState mirrored = twoShockStar({right.rho, -right.u, right.P, right.c},
                                       {left.rho, -left.u, left.P, left.c});
   return {mirrored.P, -mirrored.u};
+}
+
+// pairStar for the pair (i, j) from the particles alone, with the pair's geometry as the force
+// pass computes it (SharedPairStars solves the pairs both sides sum before the pass). The pass
+// skips a pair at zero distance, so its state is never read.
+template <int D>
+StarState pairStarOf(const ParticleSet& p, std::size_t i, std::size_t j, const double* G) {
+  PairOrigin o;
+  o.i = i;
+  o.cs = p.cs[i];
+  o.rho = p.rho[i];
+  o.P = p.P[i];
+  const double xi[3] = {p.x[0][i], p.x[1][i], p.x[2][i]};
+  const double vi[3] = {p.v[0][i], p.v[1][i], p.v[2][i]};
+  Pair g;
+  g.j = static_cast<std::uint32_t>(j);
+  for (int d = 0; d < D; ++d) {
+    g.dx[d] = xi[d] - p.x[d][j];
+    g.dv[d] = vi[d] - p.v[d][j];
+    g.r2 += g.dx[d] * g.dx[d];
+  }
+  if (g.r2 == 0.0) return {0.0, 0.0};
+  g.r = std::sqrt(g.r2);
+  g.rInv = 1.0 / g.r;
+  return pairStar<D>(o, g, p, vi, G);
 }
 
 // The particles the pairs of `active` read, themselves included, ascending: the only ones whose
@@ -227,6 +254,15 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
   const double* distention = Solid ? distentionColumn(p) : nullptr;
   const double* compaction = Solid ? compactionFactorColumn(p) : nullptr;
 
+  // Godunov: the pairs whose two particles this pass sums, solved once before it.
+  SharedPairStars* shared = nullptr;
+  if constexpr (Godunov) {
+    shared = &ws.sharedStars;
+    shared->solveAll(ws.lists, nReal, active, [&](std::size_t i, std::size_t j) {
+      return pairStarOf<D>(p, i, j, velocityGradient);
+    });
+  }
+
   // Sums particles list[begin, end) (not Listed: begin to end themselves) over their pairs, each
   // into its own derivatives alone. Dynamic chunks balance uneven pair counts. (The loop holds
   // the body: a call per particle cost the solid pass 6% more instructions.)
@@ -259,8 +295,13 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
       };
       const double* Ci = Iad ? &iad[9 * i] : nullptr;
       const bool iadI = Iad && Ci[0] != 0.0;
+      std::optional<SharedPairStars::Walk> walk;
+      if constexpr (Godunov) walk.emplace(shared->walk(i, omp_get_thread_num()));
 
       for (std::uint32_t j : ws.lists.pairs(i)) {
+        // Every partner, in order, before any is skipped: the walk counts them.
+        std::uint32_t sharedAt = SharedPairStars::kNotShared;
+        if constexpr (Godunov) sharedAt = walk->index(j);
         Pair g;
         g.j = j;
         for (int d = 0; d < D; ++d) {
@@ -302,7 +343,9 @@ void forcePassImpl(ParticleSet& p, HydroWorkspace& ws, const HaloArrival* halos,
           continue;
         }
         if constexpr (Godunov) {
-          const StarState star = pairStar<D>(o, g, p, vi, velocityGradient);
+          const StarState star = sharedAt != SharedPairStars::kNotShared
+                                     ? shared->star(sharedAt)
+                                     : pairStar<D>(o, g, p, vi, velocityGradient);
           // Inutsuka's (2002) pair volume squared in its lowest order, ((1/rho_i + 1/rho_j)/2)^2,
           // on both kernels: the same for i and j. (The grad-h weights 1/(Omega rho^2) of each
           // side, as the viscosity's pressure terms take them, put 1/rho^2 of the cold side of a

@@ -7,6 +7,7 @@
 #include "sim/sph/axis_correction.hpp"
 #include "sim/sph/cell_grid.hpp"
 #include "sim/sph/neighbour_lists.hpp"
+#include "sim/sph/shared_pair_stars.hpp"
 #include "sim/sph/sph_options.hpp"
 #include "sim/state/geometry.hpp"
 
@@ -57,6 +58,9 @@ struct HydroWorkspace {
   // pass only with conductivity on, and read right after it: a reorder of the particles does not
   // carry it along.
   std::vector<double> conductionSignal;
+  // The Riemann-solver dissipation's pairs that the force pass sums from both sides, solved once
+  // (sim/sph/shared_pair_stars.hpp); kept here for its buffers.
+  SharedPairStars sharedStars;
   // Number of neighbours in each real particle's gather list, the particle itself included
   // (diagnostics, the neighbour check and the decomposition's costs).
   std::vector<std::uint32_t> neighbourCount;

@@ -5,7 +5,8 @@
 // artificial stress's principal tensions, the pressure terms) for the particles its pairs read
 // only (touchedBy): a partner missed there would enter its pairs unprepared. A 2D granite block
 // with Balsara's switch, the artificial stress, the interface form and continuity density, and a
-// gas block in the Lagrangian form, both with a nonuniform state and flow.
+// gas block in the Lagrangian form (with the viscosity and with Godunov SPH), both with a
+// nonuniform state and flow.
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -125,6 +126,17 @@ TEST(RestrictedForcePass, GasActiveParticlesGetTheFullPassDerivatives) {
   SphOptions o;
   o.balsara = true;
   o.conductivity = 1.0;
+  expectRestrictedPassMatchesFull(test::optionGasScene("", "2d"), o, false);
+}
+
+// Godunov SPH solves a pair both particles sum once and hands the upper one the state mirrored
+// (sim/sph/shared_pair_stars.hpp): here the full pass shares every real pair and the restricted
+// one only those between active particles, so a state read with the wrong sign, from the wrong
+// pair or by the wrong particle would part the two.
+TEST(RestrictedForcePass, GodunovActiveParticlesGetTheFullPassDerivatives) {
+  SphOptions o;
+  o.dissipation = Dissipation::Riemann;
+  o.viscosityReconstruction = ViscosityReconstruction::Monotone;
   expectRestrictedPassMatchesFull(test::optionGasScene("", "2d"), o, false);
 }
 
