@@ -36,7 +36,8 @@ class CellGrid {
   // After recordReach; the caller tests r < support h_j itself. With `beyond` > 0 only the
   // particles at or past that distance whose cell's widest support exceeds it are wanted (the
   // partners a particle of support `beyond` does not reach itself): cells whose own supports
-  // stop at `beyond`, and cells wholly within it, are skipped.
+  // stop at `beyond`, cells wholly within it, and particles whose own support (as recordReach
+  // recorded it: h must not change in between) stops there, are skipped.
   template <int D>
   void queryReaching(const double* point, double radius, std::vector<std::uint32_t>& out,
                      double beyond = 0.0) const;

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 #include "sim/setup/bodies.hpp"
@@ -64,7 +65,11 @@ void expectEachSideReadsItsPair(const Block& b, const std::vector<std::size_t>* 
       for (std::uint32_t j : b.ws.lists.pairs(i)) expectedSolves += j < n && j > i && isSummed[j];
   ASSERT_GT(expectedSolves, 100u);
 
-  const int before = omp_get_max_threads();
+  // The thread count restored however the checks below end (a failed ASSERT returns early).
+  struct Threads {
+    int before = omp_get_max_threads();
+    ~Threads() { omp_set_num_threads(before); }
+  } restore;
   omp_set_num_threads(threads);
   SharedPairStars stars;
   std::atomic<std::size_t> solves{0};
@@ -92,7 +97,6 @@ void expectEachSideReadsItsPair(const Block& b, const std::vector<std::size_t>* 
     }
   }
   EXPECT_EQ(sharedSeen, 2 * expectedSolves);  // each solved pair read from both sides
-  omp_set_num_threads(before);
 }
 
 TEST(SharedPairStars, EachSideOfASummedPairReadsTheLowerOnesSolve) {
@@ -108,6 +112,26 @@ TEST(SharedPairStars, OnlyPairsOfSummedParticlesAreShared) {
   std::sort(summed.begin(), summed.end());
   summed.erase(std::unique(summed.begin(), summed.end()), summed.end());
   for (int threads : {1, 2}) expectEachSideReadsItsPair(b, &summed, threads);
+}
+
+// The upper particle finds a state through its own pair list: a list that holds a summed partner
+// below it which does not list it back would read another pair's state, so it is refused.
+TEST(SharedPairStars, PairListsThatAreNotSymmetricAreRefused) {
+  ParticleSet p;
+  p.append({0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, 1.0, 1.0, 1.0, 1.0, 0);
+  p.append({0.5, 0.0, 0.0}, {0.0, 0.0, 0.0}, 1.0, 1.0, 1.0, 1.0, 0);
+  NeighbourLists lists;
+  lists.reset(p.size(), 1);
+  const std::uint32_t first[] = {0, 1}, second[] = {1};  // 0 within 1's support, not listed
+  lists.storeGather(0, 0, first, 2);
+  lists.storeGather(0, 1, second, 1);
+  lists.buildPairs<1>(p, kKernelSupport);
+  ASSERT_EQ(lists.pairs(0).size(), 2u);
+  ASSERT_EQ(lists.pairs(1).size(), 1u);
+  SharedPairStars stars;
+  EXPECT_THROW(stars.solveAll(lists, p.numReal, nullptr,
+                              [](std::size_t i, std::size_t j) { return encoded(i, j); }),
+               std::logic_error);
 }
 
 }  // namespace
